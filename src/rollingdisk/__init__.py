@@ -1,0 +1,40 @@
+"""rollingdisk: a rigid disk of finite thickness rolling or sliding on a horizontal plane.
+
+Implements and checks M. Batista, "Steady Motion of a Rigid Disk of Finite Thickness on a
+Horizontal Plane": equations of motion on rough and smooth ground (section 2), steady
+motions (section 3) and their stability (section 4).  Dimensionless units m = a = g = 1.
+
+The numeric core (this package minus ``symbolic``, ``plotting``, ``animation`` and ``cli``)
+imports only numpy and scipy.
+"""
+
+from .disk import GROUNDS, Disk
+from .equations import (
+    ROUGH_STATE,
+    SMOOTH_STATE,
+    contact_force,
+    contact_point,
+    energy,
+    equations_of_motion,
+    omega_dot,
+    state_index,
+    state_names,
+    velocity_of_C,
+)
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "Disk",
+    "GROUNDS",
+    "ROUGH_STATE",
+    "SMOOTH_STATE",
+    "contact_force",
+    "contact_point",
+    "energy",
+    "equations_of_motion",
+    "omega_dot",
+    "state_index",
+    "state_names",
+    "velocity_of_C",
+]

@@ -1,0 +1,264 @@
+"""Numeric equations of motion, contact force and energy (section 2 and eqs. 37, 38, 49).
+
+Dimensionless units throughout (m = a = g = 1, see :mod:`rollingdisk.disk`).  The
+functions whose names start with an underscore are the kernels: plain arithmetic on floats
+(or, element-wise, on numpy arrays) with no Python objects, so that the very same source can
+be compiled with numba for batch work.  The public functions wrap them for a :class:`Disk`.
+
+State vectors
+-------------
+rough ground (no slip), 8 components::
+
+    y = [X_C, Y_C, psi, theta, phi, omega1, omega2, omega3]
+
+smooth ground (no friction), 10 components::
+
+    y = [X_C, Y_C, V_X, V_Y, psi, theta, phi, omega1, omega2, omega3]
+
+``(X_C, Y_C)`` is the centre C in the inertial frame OXYZ, ``(V_X, V_Y)`` the inertial
+horizontal velocity of C (constant on smooth ground), ``psi, theta, phi`` the spin,
+inclination and rotation angles, ``omega1..3`` the angular velocity in C xi eta zeta
+(eqs. 2-3).  ``Z_C`` is not a state: the contact constraint gives ``Z_C = -z_P`` (eq. 7).
+
+Every formula here is checked against the sympy derivation in :mod:`rollingdisk.symbolic`
+by ``tests/test_derivation.py``; see ``docs/errata.md``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+
+from .disk import Disk, check_ground
+
+__all__ = [
+    "ROUGH_STATE",
+    "SMOOTH_STATE",
+    "state_names",
+    "state_index",
+    "equations_of_motion",
+    "omega_dot",
+    "contact_force",
+    "energy",
+    "contact_point",
+    "velocity_of_C",
+]
+
+#: Names of the rough-ground state components, in order.
+ROUGH_STATE = ("X_C", "Y_C", "psi", "theta", "phi", "omega1", "omega2", "omega3")
+#: Names of the smooth-ground state components, in order.
+SMOOTH_STATE = ("X_C", "Y_C", "V_X", "V_Y", "psi", "theta", "phi", "omega1", "omega2", "omega3")
+
+
+def state_names(ground: str) -> tuple[str, ...]:
+    """The names of the state components for ``ground`` (``"rough"`` or ``"smooth"``)."""
+    return ROUGH_STATE if check_ground(ground) == "rough" else SMOOTH_STATE
+
+
+def state_index(ground: str, name: str) -> int:
+    """Index of the component ``name`` in the state vector of ``ground``."""
+    names = state_names(ground)
+    if name not in names:
+        raise ValueError(f"name must be one of {names} on {ground} ground, got {name!r}")
+    return names.index(name)
+
+
+# ---------------------------------------------------------------------------------------
+# kernels: plain arithmetic, numba-compilable, element-wise on arrays
+# ---------------------------------------------------------------------------------------
+def _geometry(h, theta):
+    """``h~, sin, cos, tan, y_P, z_P`` at inclination ``theta`` (eq. 4, a = 1)."""
+    ht = h * np.sign(theta)
+    s = np.sin(theta)
+    c = np.cos(theta)
+    y_P = s - ht * c  # eq. (4)
+    z_P = -(c + ht * s)  # eq. (4)
+    return ht, s, c, s / c, y_P, z_P
+
+
+def _rough_omega_dot(h, theta, w1, w2, w3):
+    """Angular accelerations on rough ground, eq. (38) (confirmed by the derivation)."""
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    h2 = h * h
+    d1 = (6.0 * (3.0 + 2.0 * ht * p) * w2 * w3
+          - ((3.0 + 16.0 * h2) * p + 12.0 * ht) * w3 * w3
+          + 12.0 * y_P) / (15.0 + 16.0 * h2)
+    d2 = -(4.0 * ht * w2 + (2.0 / 3.0) * (3.0 + 4.0 * h2) * w3) * w1 / (3.0 + 8.0 * h2)
+    d3 = (-6.0 * w2 / (3.0 + 8.0 * h2) + (p + 4.0 * ht / (3.0 + 8.0 * h2)) * w3) * w1
+    return d1, d2, d3
+
+
+def _smooth_omega_dot(h, theta, w1, w2, w3):
+    """Angular accelerations on smooth ground, eq. (49) (confirmed by the derivation)."""
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    k1 = 0.25 + h * h / 3.0  # eq. (10)
+    k2 = 0.5
+    d1 = ((k2 * w2 - k1 * w3 * p) * w3 + y_P + y_P * z_P * w1 * w1) / (k1 + y_P * y_P)
+    d2 = 0.0 * w1
+    d3 = (-k2 * w2 + k1 * w3 * p) * w1 / k1
+    return d1, d2, d3
+
+
+def _rough_rhs(h, y):
+    """Right-hand side on rough ground: eqs. (1), (2), (37), (38)."""
+    X_C, Y_C, psi, theta, phi, w1, w2, w3 = y
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    v_Cx = w2 - ht * w3  # eq. (37)
+    v_Cy = w1 * z_P  # eq. (37)
+    cp = np.cos(psi)
+    sp = np.sin(psi)
+    d1, d2, d3 = _rough_omega_dot(h, theta, w1, w2, w3)
+    return (v_Cx * cp - v_Cy * sp,  # eq. (1)
+            v_Cx * sp + v_Cy * cp,
+            w3 / c,  # eq. (2)
+            w1,
+            w2 - w3 * p,
+            d1, d2, d3)
+
+
+def _smooth_rhs(h, y):
+    """Right-hand side on smooth ground: eqs. (2), (8) with F_x = F_y = 0, (49)."""
+    X_C, Y_C, V_X, V_Y, psi, theta, phi, w1, w2, w3 = y
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    d1, d2, d3 = _smooth_omega_dot(h, theta, w1, w2, w3)
+    zero = 0.0 * V_X
+    return (V_X, V_Y, zero, zero, w3 / c, w1, w2 - w3 * p, d1, d2, d3)
+
+
+def _velocity_of_C(ground_is_rough, h, y):
+    """``(v_Cx, v_Cy, v_Cz)`` in Cxyz (eqs. 1, 7, 37)."""
+    if ground_is_rough:
+        X_C, Y_C, psi, theta, phi, w1, w2, w3 = y
+        ht, s, c, p, y_P, z_P = _geometry(h, theta)
+        v_Cx = w2 - ht * w3  # eq. (37)
+        v_Cy = w1 * z_P
+    else:
+        X_C, Y_C, V_X, V_Y, psi, theta, phi, w1, w2, w3 = y
+        ht, s, c, p, y_P, z_P = _geometry(h, theta)
+        cp = np.cos(psi)
+        sp = np.sin(psi)
+        v_Cx = V_X * cp + V_Y * sp  # eq. (1) inverted
+        v_Cy = -V_X * sp + V_Y * cp
+    return v_Cx, v_Cy, -w1 * y_P  # eq. (7)
+
+
+# ---------------------------------------------------------------------------------------
+# public API
+# ---------------------------------------------------------------------------------------
+def _as_state(ground: str, y) -> np.ndarray:
+    y = np.asarray(y, dtype=float)
+    n = len(state_names(ground))
+    if y.shape[:1] != (n,):
+        raise ValueError(
+            f"y must have {n} components on {ground} ground ({', '.join(state_names(ground))}),"
+            f" got shape {y.shape}"
+        )
+    return y
+
+
+def equations_of_motion(disk: Disk, ground: str) -> Callable[[float, np.ndarray], np.ndarray]:
+    """The right-hand side ``f(t, y)`` of the equations of motion, for ``solve_ivp``.
+
+    Parameters
+    ----------
+    disk : Disk
+        The disk; only ``disk.h`` enters (dimensionless units).
+    ground : {"rough", "smooth"}
+        Rough: rolling without slip, eqs. (1), (2), (37), (38).  Smooth: no friction,
+        eqs. (2), (8) with ``F_x = F_y = 0`` and (49).
+
+    Returns
+    -------
+    callable
+        ``f(t, y) -> dy/dt`` with ``y`` laid out as in :data:`ROUGH_STATE` or
+        :data:`SMOOTH_STATE`; ``y`` may also be an ``(n, k)`` array of ``k`` states.
+
+    Examples
+    --------
+    >>> from scipy.integrate import solve_ivp
+    >>> f = equations_of_motion(Disk(h=0.1), "rough")
+    >>> sol = solve_ivp(f, (0, 1), [0, 0, 0, 0.3, 0, 0, 2.0, 0.5], rtol=1e-10)
+    >>> bool(sol.success)
+    True
+    """
+    h = disk.h
+    kernel = _rough_rhs if check_ground(ground) == "rough" else _smooth_rhs
+
+    def f(t, y):
+        return np.array(kernel(h, y))
+
+    f.__doc__ = f"dy/dt on {ground} ground for h = {h:g}."
+    return f
+
+
+def omega_dot(disk: Disk, ground: str, theta, omega1, omega2, omega3):
+    """``(d omega1/dt, d omega2/dt, d omega3/dt)``: eq. (38) on rough, (49) on smooth ground.
+
+    These, with ``d theta/dt = omega1``, form the reduced system that governs the
+    inclination and the angular velocity; positions and ``psi, phi`` do not enter.
+    """
+    kernel = _rough_omega_dot if check_ground(ground) == "rough" else _smooth_omega_dot
+    return kernel(disk.h, theta, omega1, omega2, omega3)
+
+
+def velocity_of_C(disk: Disk, ground: str, y):
+    """Velocity of the centre C in Cxyz, ``(v_Cx, v_Cy, v_Cz)``.
+
+    On rough ground it follows from the no-slip condition, eq. (37); on smooth ground from
+    the inertial velocity ``(V_X, V_Y)`` in the state.  ``v_Cz = -omega1 y_P`` (eq. 7).
+    """
+    y = _as_state(ground, y)
+    return _velocity_of_C(ground == "rough", disk.h, y)
+
+
+def contact_force(disk: Disk, ground: str, y):
+    """Contact force ``(F_x, F_y, F_z)`` at P in Cxyz, units of ``m g`` (eqs. 8, 11).
+
+    On smooth ground ``F_x = F_y = 0``.  Contact is maintained while ``F_z > 0``.
+    ``y`` may be a single state or an ``(n, k)`` array of states.
+    """
+    y = _as_state(ground, y)
+    h = disk.h
+    rough = ground == "rough"
+    theta, w1, w2, w3 = (y[3], y[5], y[6], y[7]) if rough else (y[5], y[7], y[8], y[9])
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    if rough:
+        d1, d2, d3 = _rough_omega_dot(h, theta, w1, w2, w3)
+        Omega = w3 / c  # eq. (2)
+        v_Cx = w2 - ht * w3  # eq. (37)
+        v_Cy = w1 * z_P
+        F_x = (d2 - ht * d3) - v_Cy * Omega  # eq. (8)_1; d y_P/d theta = -z_P
+        F_y = (z_P * d1 + y_P * w1 * w1) + v_Cx * Omega  # eq. (8)_2; d z_P/d theta = y_P
+    else:
+        d1, d2, d3 = _smooth_omega_dot(h, theta, w1, w2, w3)
+        F_x = F_y = 0.0 * theta
+    F_z = 1.0 + z_P * w1 * w1 - y_P * d1  # eq. (11)
+    return F_x, F_y, F_z
+
+
+def energy(disk: Disk, ground: str, y):
+    """Total mechanical energy, units of ``m g a`` (eq. 13), potential energy ``Z_C``.
+
+    ``Z_C = -z_P`` (eq. 7), so a disk standing upright at rest (h = 0) has ``E = 1``.
+    """
+    y = _as_state(ground, y)
+    h = disk.h
+    rough = ground == "rough"
+    theta, w1, w2, w3 = (y[3], y[5], y[6], y[7]) if rough else (y[5], y[7], y[8], y[9])
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    v_Cx, v_Cy, v_Cz = _velocity_of_C(rough, h, y)
+    k1 = disk.k1_sq
+    k2 = disk.k2_sq
+    return (0.5 * (v_Cx * v_Cx + v_Cy * v_Cy + v_Cz * v_Cz)
+            + 0.5 * k1 * (w1 * w1 + w3 * w3) + 0.5 * k2 * w2 * w2 - z_P)
+
+
+def contact_point(disk: Disk, ground: str, y):
+    """Contact point P on the plane, ``(X_P, Y_P)`` in OXYZ (eq. 5)."""
+    y = _as_state(ground, y)
+    rough = ground == "rough"
+    X_C, Y_C = y[0], y[1]
+    psi, theta = (y[2], y[3]) if rough else (y[4], y[5])
+    y_P = _geometry(disk.h, theta)[4]
+    return X_C - y_P * np.sin(psi), Y_C + y_P * np.cos(psi)  # eq. (5)
