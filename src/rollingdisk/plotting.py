@@ -1,0 +1,494 @@
+"""Plots: existence and stability maps of steady motions (sections 3-4) and trajectories.
+
+This module sits outside the numeric core: it calls :mod:`rollingdisk.steady`,
+:mod:`rollingdisk.stability` and :mod:`rollingdisk.equations` and draws what they return.
+It never re-implements a formula of the paper.  matplotlib is imported only when a plot
+function is called; every function takes ``ax=None`` (a new figure is made when it is
+``None``), returns what it drew and never calls ``plt.show()``.
+
+Map functions return a :class:`MapPlot`: the axes, the grid, the values on the grid (a
+class code or ``varpi2``) and the artists.  Class codes are
+
+* ``NO_MOTION = 0``: no steady motion (``Omega0^2 <= 0``),
+* ``UNSTABLE = 1``: a steady motion exists but ``varpi^2 < 0``,
+* ``STABLE = 2``: ``varpi^2 > 0``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .disk import check_ground, check_real
+
+__all__ = [
+    "NO_MOTION",
+    "UNSTABLE",
+    "STABLE",
+    "CLASS_COLORS",
+    "MapPlot",
+    "existence_codes",
+    "plot_existence_map",
+    "plot_stability_map",
+    "plot_all_omega30_stable",
+    "plot_varpi2_surface",
+    "varpi2_zero_surface",
+    "plot_paths",
+    "plot_theta",
+    "plot_energy_error",
+    "plot_contact_forces",
+    "plot_trajectory",
+    "trajectory_series",
+]
+
+NO_MOTION, UNSTABLE, STABLE = 0, 1, 2
+#: Colours of the classes, as in the paper's Figure 4: dark, gray, white.
+CLASS_COLORS = ("#3a3a3a", "#b4b4b4", "#ffffff")
+CLASS_LABELS = ("no steady motion ($\\Omega_0^2<0$)", "possible, unstable ($\\varpi^2<0$)",
+                "stable ($\\varpi^2>0$)")
+
+#: Axis labels in the paper's symbols (matplotlib mathtext).
+LABELS = {
+    "theta0": r"$\theta_0$ [rad]",
+    "theta0_deg": r"$\theta_0$ [deg]",
+    "r_C": r"$r_C$",
+    "h": r"$h$",
+    "omega30": r"$\omega_{30}$",
+    "varpi2": r"$\varpi^2$",
+}
+
+
+@dataclass(frozen=True)
+class MapPlot:
+    """What a map function drew.
+
+    Attributes
+    ----------
+    ax : matplotlib Axes
+    x, y : ndarray
+        The grid (1-D coordinates of the cell centres along each axis).
+    values : ndarray, shape (len(y), len(x))
+        Class codes (:data:`NO_MOTION`, :data:`UNSTABLE`, :data:`STABLE`), a boolean, or
+        the plotted quantity.
+    artists : dict
+        The artists drawn, by role (``"mesh"``, ``"r_C_star"``, ...).
+    """
+
+    ax: object
+    x: np.ndarray
+    y: np.ndarray
+    values: np.ndarray
+    artists: dict = field(default_factory=dict)
+
+    def share(self, code, mask=None) -> float:
+        """Fraction of the cells (inside ``mask`` if given) whose value equals ``code``."""
+        v = np.asarray(self.values)
+        sel = np.ones(v.shape, bool) if mask is None else np.asarray(mask, bool)
+        return float(np.mean(v[sel] == code)) if sel.any() else float("nan")
+
+
+# ------------------------------------------------------------------------------ helpers
+def _pyplot():
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _axes(ax, projection=None, figsize=(5.0, 4.0)):
+    if ax is not None:
+        return ax
+    plt = _pyplot()
+    fig = plt.figure(figsize=figsize)
+    return fig.add_subplot(1, 1, 1, projection=projection)
+
+
+def _class_cmap():
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+
+    return ListedColormap(CLASS_COLORS), BoundaryNorm([-0.5, 0.5, 1.5, 2.5], 3)
+
+
+def _class_legend(ax, codes_present=(NO_MOTION, UNSTABLE, STABLE), **kw):
+    from matplotlib.patches import Patch
+
+    handles = [Patch(facecolor=CLASS_COLORS[c], edgecolor="k", linewidth=0.5,
+                     label=CLASS_LABELS[c]) for c in codes_present]
+    return ax.legend(handles=handles, **kw)
+
+
+def _theta_grid(n, theta_max=None):
+    hi = (0.5 * math.pi) if theta_max is None else theta_max
+    # open at both ends: theta0 = 0 and pi/2 are excluded from the circle theory
+    return np.linspace(0.0, hi, n + 2)[1:-1]
+
+
+# ------------------------------------------------------------------- existence / stability
+def existence_codes(h: float, theta0, r_C) -> np.ndarray:
+    """Class codes of the rough-ground steady circle with given ``theta0`` and ``r_C``.
+
+    ``NO_MOTION`` where ``Omega0^2`` of eq. (31) is not positive, else ``STABLE`` or
+    ``UNSTABLE`` by the sign of ``varpi^2`` (eq. 47 route, as corrected in the library).
+    Arrays broadcast.
+    """
+    from .stability import varpi2_rough_rC
+    from .steady import Omega0_sq
+
+    theta0, r_C = np.broadcast_arrays(np.asarray(theta0, float), np.asarray(r_C, float))
+    with np.errstate(all="ignore"):
+        O2 = np.asarray(Omega0_sq(h, theta0, r_C), float)
+        exists = np.isfinite(O2) & (O2 > 0)
+        v2 = np.asarray(varpi2_rough_rC(h, theta0, r_C), float)
+    codes = np.full(theta0.shape, NO_MOTION, dtype=np.int8)
+    codes[exists] = UNSTABLE
+    codes[exists & np.isfinite(v2) & (v2 > 0)] = STABLE
+    return codes
+
+
+def _default_r_C_range(h: float) -> tuple[float, float]:
+    R = max(1.0, 0.5 * h)
+    return -R, R
+
+
+def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200),
+                       r_C_range: tuple[float, float] | None = None, legend: bool = True,
+                       title: str | None = None) -> MapPlot:
+    """Existence and stability of steady circles in the ``(theta0, r_C)`` plane (Figure 4).
+
+    Rough ground: dark where no steady motion exists (``Omega0^2 <= 0``, eq. 31), gray
+    where it exists but is unstable (``varpi^2 < 0``), white where it is stable; the
+    boundary curve ``r_C*`` (eq. 32) and the static-equilibrium tilt ``tan theta0 = h`` are
+    drawn.
+
+    Smooth ground: the centre C is at rest (``r_C = 0``, section 3.1.2), so a steady motion
+    exists only on the line ``r_C = 0`` (for every ``theta0`` and every ``Omega0``); the
+    map shows the rest of the plane as "no steady motion" and the line itself.
+
+    Parameters
+    ----------
+    h : float
+        Half-thickness, ``h >= 0``.
+    ground : {"rough", "smooth"}
+    ax : matplotlib Axes, optional
+    n : (int, int)
+        Grid size along ``theta0`` and ``r_C``.
+    r_C_range : (float, float), optional
+        Range of ``r_C``; by default ``+-max(1, h/2)``.
+    """
+    from .steady import r_C_star
+
+    h = check_real("h", h, low=0.0)
+    check_ground(ground)
+    ax = _axes(ax)
+    lo, hi = r_C_range or _default_r_C_range(h)
+    th = _theta_grid(n[0])
+    rc = np.linspace(lo, hi, n[1])
+    TH, RC = np.meshgrid(th, rc)
+    cmap, norm = _class_cmap()
+    artists = {}
+    if ground == "rough":
+        codes = existence_codes(h, TH, RC)
+    else:
+        codes = np.full(TH.shape, NO_MOTION, dtype=np.int8)
+    artists["mesh"] = ax.pcolormesh(th, rc, codes, cmap=cmap, norm=norm, shading="nearest",
+                                    rasterized=True)
+    if ground == "rough":
+        with np.errstate(all="ignore"):
+            star = np.asarray(r_C_star(h, th), float)
+        (artists["r_C_star"],) = ax.plot(th, star, color="tab:red", lw=1.4,
+                                         label=r"$r_C^*$ (eq. 32)")
+        present = (NO_MOTION, UNSTABLE, STABLE)
+    else:
+        (artists["line"],) = ax.plot(th, 0.0 * th, color="tab:green", lw=2.5,
+                                     label=r"spin, $r_C=0$ (any $\Omega_0$)")
+        present = (NO_MOTION,)
+    if h > 0:
+        artists["se"] = ax.axvline(math.atan(h), color="tab:blue", ls="--", lw=1.0,
+                                   label=r"SE: $\tan\theta_0=h$")
+    ax.set_xlim(0.0, 0.5 * math.pi)
+    ax.set_ylim(lo, hi)
+    ax.set_xlabel(LABELS["theta0"])
+    ax.set_ylabel(LABELS["r_C"])
+    ax.set_title(title if title is not None else f"{ground} ground, $h = {h:.4g}$")
+    if legend:
+        leg1 = _class_legend(ax, present, loc="lower left", fontsize="x-small", framealpha=0.9)
+        ax.add_artist(leg1)
+        ax.legend(loc="upper right", fontsize="x-small", framealpha=0.9)
+    return MapPlot(ax, th, rc, codes, artists)
+
+
+def plot_stability_map(h: float, ground: str, ax=None, *, n=(240, 200),
+                       omega30_max: float = 3.0, legend: bool = True,
+                       title: str | None = None) -> MapPlot:
+    """Sign of ``varpi^2`` of steady circles in the ``(theta0, omega30)`` plane.
+
+    For every ``theta0`` and ``omega30 != 0`` a steady circle exists on either ground
+    (``omega20`` follows from eq. 44 rough / eq. 54 smooth), so the map has two classes:
+    gray unstable, white stable.  ``values`` holds the class codes; the dashed horizontal
+    line is the paper's uniform bound (``omega30^2 = 1`` rough, ``2`` smooth), above which
+    the conclusion says every steady motion is stable.
+    """
+    from .stability import varpi2_circle
+
+    h = check_real("h", h, low=0.0)
+    check_ground(ground)
+    omega30_max = check_real("omega30_max", omega30_max, low=0.0, low_open=True)
+    ax = _axes(ax)
+    th = _theta_grid(n[0])
+    w = np.linspace(0.0, omega30_max, n[1] + 1)[1:]
+    TH, W = np.meshgrid(th, w)
+    with np.errstate(all="ignore"):
+        v2 = np.asarray(varpi2_circle(ground, h, TH, W), float)
+    codes = np.where(np.isfinite(v2) & (v2 > 0), STABLE, UNSTABLE).astype(np.int8)
+    cmap, norm = _class_cmap()
+    artists = {"mesh": ax.pcolormesh(th, w, codes, cmap=cmap, norm=norm, shading="nearest",
+                                     rasterized=True)}
+    with np.errstate(all="ignore"):
+        if np.nanmin(v2) < 0 < np.nanmax(v2):
+            artists["contour"] = ax.contour(th, w, v2, levels=[0.0], colors="k",
+                                            linewidths=0.8)
+    bound = 1.0 if ground == "rough" else math.sqrt(2.0)
+    if bound <= omega30_max:
+        artists["paper_bound"] = ax.axhline(
+            bound, color="tab:purple", ls=":", lw=1.2,
+            label=("paper: $\\omega_{30}^2=1$" if ground == "rough"
+                   else "paper: $\\omega_{30}^2=2$"))
+    if h > 0:
+        artists["se"] = ax.axvline(math.atan(h), color="tab:blue", ls="--", lw=1.0,
+                                   label=r"SE: $\tan\theta_0=h$")
+    ax.set_xlim(0.0, 0.5 * math.pi)
+    ax.set_ylim(0.0, omega30_max)
+    ax.set_xlabel(LABELS["theta0"])
+    ax.set_ylabel(LABELS["omega30"])
+    ax.set_title(title if title is not None else f"{ground} ground, $h = {h:.4g}$")
+    if legend:
+        leg1 = _class_legend(ax, (UNSTABLE, STABLE), loc="lower left", fontsize="x-small",
+                             framealpha=0.9)
+        ax.add_artist(leg1)
+        ax.legend(loc="upper right", fontsize="x-small", framealpha=0.9)
+    return MapPlot(ax, th, w, codes, artists)
+
+
+def plot_all_omega30_stable(ground: str, ax=None, *, n=(240, 200),
+                            theta0_deg_range: tuple[float, float] = (0.0, 90.0),
+                            h_range: tuple[float, float] = (0.0, 3.0),
+                            mark_h: float | None = None, asymptote: bool = True,
+                            title: str | None = None) -> MapPlot:
+    """Region of ``(theta0 [deg], h)`` where the steady circle is stable for every
+    ``omega30`` (Figure 5 rough, condition (46); Figure 7 smooth, condition (59)).
+
+    White (``values`` True) is stable for every ``omega30``; gray is unstable for some.
+    The dashed line is the paper's large-``h`` asymptote of the right boundary
+    (``theta0 = arctan(3h/2)`` rough, ``arctan(4h/3)`` smooth); ``mark_h`` draws a
+    horizontal line at one disk's ``h``.
+    """
+    from .stability import stable_for_all_omega30
+
+    check_ground(ground)
+    ax = _axes(ax)
+    t_lo, t_hi = theta0_deg_range
+    deg = np.linspace(t_lo, t_hi, n[0] + 2)[1:-1]
+    hh = np.linspace(h_range[0], h_range[1], n[1])
+    D, H = np.meshgrid(deg, hh)
+    ok = np.asarray(stable_for_all_omega30(ground, H, np.radians(D)), bool)
+    cmap, norm = _class_cmap()
+    codes = np.where(ok, STABLE, UNSTABLE).astype(np.int8)
+    artists = {"mesh": ax.pcolormesh(deg, hh, codes, cmap=cmap, norm=norm, shading="nearest",
+                                     rasterized=True)}
+    if asymptote:
+        k = 1.5 if ground == "rough" else 4.0 / 3.0
+        (artists["asymptote"],) = ax.plot(
+            np.degrees(np.arctan(k * hh)), hh, color="tab:red", ls="--", lw=1.0,
+            label=(r"paper: $\theta_0=\arctan(3h/2)$" if ground == "rough"
+                   else r"paper: $\theta_0=\arctan(4h/3)$"))
+    if mark_h is not None:
+        artists["mark_h"] = ax.axhline(mark_h, color="tab:blue", lw=1.0,
+                                       label=f"this disk, $h={mark_h:.4g}$")
+    ax.set_xlim(t_lo, t_hi)
+    ax.set_ylim(*h_range)
+    ax.set_xlabel(LABELS["theta0_deg"])
+    ax.set_ylabel(LABELS["h"])
+    ax.set_title(title if title is not None
+                 else f"{ground} ground: stable for every $\\omega_{{30}}$ (white)")
+    if asymptote or mark_h is not None:
+        ax.legend(loc="upper left", fontsize="x-small", framealpha=0.9)
+    return MapPlot(ax, deg, hh, ok, artists)
+
+
+def varpi2_zero_surface(ground: str, h, theta0):
+    """The roots ``omega30 > 0`` of ``varpi^2 = 0`` (eqs. 45 / 55) at each ``(h, theta0)``.
+
+    ``varpi^2 omega30^2`` is, for fixed ``(theta0, h)``, a quadratic in ``x = omega30^2``
+    (its numerator ``P2 x^2 + P1 x + P0`` over a positive denominator).  The quadratic is
+    recovered from :func:`rollingdisk.stability.varpi2_circle` at ``x = 1, 2, 3`` (so the
+    library's corrected formula is what is drawn) and its positive roots are returned.
+
+    Returns
+    -------
+    (lower, upper) : ndarrays
+        ``omega30`` of the lower and upper sheet, NaN where there is no positive root.
+    """
+    from .stability import varpi2_circle
+
+    check_ground(ground)
+    h, theta0 = np.broadcast_arrays(np.asarray(h, float), np.asarray(theta0, float))
+    with np.errstate(all="ignore"):
+        f = [x * np.asarray(varpi2_circle(ground, h, theta0, math.sqrt(x)), float)
+             for x in (1.0, 2.0, 3.0)]
+        # f(x) = a x^2 + b x + c through x = 1, 2, 3
+        a = 0.5 * (f[2] - 2.0 * f[1] + f[0])
+        b = f[1] - f[0] - 3.0 * a
+        c = f[0] - a - b
+        disc = b * b - 4.0 * a * c
+        sq = np.sqrt(np.where(disc >= 0, disc, np.nan))
+        r1 = (-b - np.sign(a) * sq) / (2.0 * a)
+        r2 = (-b + np.sign(a) * sq) / (2.0 * a)
+        lo = np.sqrt(np.where(r1 > 0, r1, np.nan))
+        hi = np.sqrt(np.where(r2 > 0, r2, np.nan))
+    return lo, hi
+
+
+def plot_varpi2_surface(ground: str, ax=None, *, n=(80, 80),
+                        theta0_range: tuple[float, float] = (0.0, 0.5 * math.pi),
+                        h_range: tuple[float, float] = (0.0, 2.0),
+                        title: str | None = None) -> MapPlot:
+    """The surface ``varpi^2 = 0`` in ``(theta0, h, omega30)`` (Figure 6 rough, 8 smooth).
+
+    Both sheets (lower and upper positive root ``omega30`` of the numerator of eq. 45 / 55,
+    quadratic in ``omega30^2``) are drawn; where there is no positive root the surface is
+    masked.  Outside the closed surface the steady motions are stable.  ``values`` holds
+    the upper sheet (NaN where none); ``artists["lower"], artists["upper"]`` are the
+    surfaces.
+    """
+    check_ground(ground)
+    ax = _axes(ax, projection="3d", figsize=(6.0, 5.0))
+    th = np.linspace(theta0_range[0], theta0_range[1], n[0] + 2)[1:-1]
+    hh = np.linspace(h_range[0], h_range[1], n[1])
+    TH, H = np.meshgrid(th, hh)
+    lo, hi = varpi2_zero_surface(ground, H, TH)
+    artists = {}
+    for name, Z, color in (("lower", lo, "tab:orange"), ("upper", hi, "tab:blue")):
+        if np.isfinite(Z).any():
+            artists[name] = ax.plot_surface(TH, H, np.ma.masked_invalid(Z), color=color,
+                                            alpha=0.75, linewidth=0, antialiased=False,
+                                            rcount=min(60, n[1]), ccount=min(60, n[0]))
+    ax.set_xlabel(LABELS["theta0"])
+    ax.set_ylabel(LABELS["h"])
+    ax.set_zlabel(LABELS["omega30"])
+    ax.set_xlim(*theta0_range)
+    ax.set_ylim(*h_range)
+    zmax = np.nanmax(hi) if np.isfinite(hi).any() else 1.0
+    ax.set_zlim(0.0, 1.05 * zmax)
+    ax.view_init(elev=25, azim=-60)
+    ax.set_title(title if title is not None
+                 else f"{ground} ground: surface $\\varpi^2=0$")
+    return MapPlot(ax, th, hh, hi, artists)
+
+
+# ------------------------------------------------------------------------------ trajectories
+def trajectory_series(traj, name: str) -> np.ndarray:
+    """A time series of ``traj``: its attribute ``name`` if it has one, else computed from
+    ``traj.y`` with :mod:`rollingdisk.equations` (needs ``traj.disk``, ``traj.ground``).
+
+    Works with :class:`rollingdisk.simulate.Trajectory` and any object with ``disk``,
+    ``ground``, ``t`` and ``y`` of shape ``(n_state, n)``.
+    """
+    value = getattr(traj, name, None)
+    if value is not None:
+        return np.asarray(value, float)
+    from . import equations as eq
+
+    y = np.asarray(traj.y, float)
+    names = eq.state_names(traj.ground)
+    if name in names:
+        return y[names.index(name)]
+    if name in ("X_P", "Y_P"):
+        return np.asarray(eq.contact_point(traj.disk, traj.ground, y)[name == "Y_P"], float)
+    if name in ("F_x", "F_y", "F_z"):
+        F = eq.contact_force(traj.disk, traj.ground, y)["xyz".index(name[-1])]
+        return np.broadcast_to(np.asarray(F, float), y.shape[1:]).copy()
+    if name == "E":
+        return np.asarray(eq.energy(traj.disk, traj.ground, y), float)
+    raise ValueError(f"unknown series {name!r}")
+
+
+def plot_paths(traj, ax=None, *, title: str | None = None) -> dict:
+    """Paths of the centre C (projected on the plane) and of the contact point P (eq. 5)."""
+    ax = _axes(ax)
+    XC, YC = trajectory_series(traj, "X_C"), trajectory_series(traj, "Y_C")
+    XP, YP = trajectory_series(traj, "X_P"), trajectory_series(traj, "Y_P")
+    (lc,) = ax.plot(XC, YC, color="tab:blue", lw=1.0, label="C (centre)")
+    (lp,) = ax.plot(XP, YP, color="tab:red", lw=1.0, label="P (contact)")
+    start = ax.scatter([XC[0], XP[0]], [YC[0], YP[0]], color=["tab:blue", "tab:red"],
+                       marker="o", s=16, zorder=3)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(r"$X$")
+    ax.set_ylabel(r"$Y$")
+    ax.legend(loc="best", fontsize="x-small")
+    ax.set_title(title if title is not None else "paths on the plane")
+    return {"ax": ax, "C": lc, "P": lp, "start": start}
+
+
+def plot_theta(traj, ax=None, *, theta0: float | None = None, title: str | None = None) -> dict:
+    """Inclination ``theta(t)``; ``theta0`` draws the steady value."""
+    ax = _axes(ax)
+    t = np.asarray(traj.t, float)
+    (line,) = ax.plot(t, trajectory_series(traj, "theta"), color="k", lw=1.0,
+                      label=r"$\theta(t)$")
+    out = {"ax": ax, "theta": line}
+    if theta0 is not None:
+        out["theta0"] = ax.axhline(theta0, color="tab:blue", ls="--", lw=0.8,
+                                   label=r"$\theta_0$")
+        ax.legend(loc="best", fontsize="x-small")
+    ax.set_xlabel(r"$t\ [\sqrt{a/g}]$")
+    ax.set_ylabel(r"$\theta$ [rad]")
+    ax.set_title(title if title is not None else "inclination")
+    return out
+
+
+def plot_energy_error(traj, ax=None, *, title: str | None = None) -> dict:
+    """Energy error ``E(t) - E(0)`` (eq. 13), in units of ``m g a``."""
+    ax = _axes(ax)
+    t = np.asarray(traj.t, float)
+    E = trajectory_series(traj, "E")
+    (line,) = ax.plot(t, E - E[0], color="tab:green", lw=1.0)
+    ax.set_xlabel(r"$t\ [\sqrt{a/g}]$")
+    ax.set_ylabel(r"$E(t)-E(0)$ [$mga$]")
+    ax.ticklabel_format(axis="y", style="sci", scilimits=(-2, 2))
+    ax.set_title(title if title is not None else "energy error")
+    return {"ax": ax, "dE": line}
+
+
+def plot_contact_forces(traj, ax=None, *, title: str | None = None) -> dict:
+    """Contact force components ``F_x, F_y, F_z`` in Cxyz (eqs. 8, 11), units of ``m g``."""
+    ax = _axes(ax)
+    t = np.asarray(traj.t, float)
+    out = {"ax": ax}
+    for name, color in (("F_x", "tab:blue"), ("F_y", "tab:orange"), ("F_z", "k")):
+        (out[name],) = ax.plot(t, trajectory_series(traj, name), color=color, lw=1.0,
+                               label=f"${name}$")
+    ax.axhline(0.0, color="0.6", lw=0.6)
+    ax.set_xlabel(r"$t\ [\sqrt{a/g}]$")
+    ax.set_ylabel(r"force [$mg$]")
+    ax.legend(loc="best", fontsize="x-small")
+    ax.set_title(title if title is not None else "contact force")
+    return out
+
+
+def plot_trajectory(traj, fig=None, *, theta0: float | None = None,
+                    title: str | None = None) -> dict:
+    """A 2x2 summary of a trajectory: paths, ``theta(t)``, energy error, contact force."""
+    plt = _pyplot()
+    if fig is None:
+        fig = plt.figure(figsize=(9.0, 6.5))
+    axs = fig.subplots(2, 2)
+    out = {"fig": fig, "axes": axs,
+           "paths": plot_paths(traj, axs[0, 0]),
+           "theta": plot_theta(traj, axs[0, 1], theta0=theta0),
+           "energy": plot_energy_error(traj, axs[1, 0]),
+           "forces": plot_contact_forces(traj, axs[1, 1])}
+    if title:
+        fig.suptitle(title)
+    fig.tight_layout()
+    return out
