@@ -1,0 +1,207 @@
+"""3D animation of a simulated motion: the disk as a cylinder of thickness 2h on the plane.
+
+Geometry (section 2, Figure 1): the centre C is at ``(X_C, Y_C, Z_C)`` with
+``Z_C = -z_P`` (eq. 7); the frame ``C xi eta zeta`` has
+
+* ``xi   = x = (cos psi, sin psi, 0)``,
+* ``eta  = cos(theta) y + sin(theta) Z = (-sin psi cos theta, cos psi cos theta, sin theta)``
+  (the disk's symmetry axis),
+* ``zeta = -sin(theta) y + cos(theta) Z``,
+
+with ``y = (-sin psi, cos psi, 0)``.  Body-fixed points turn by the rotation angle ``phi``
+about ``eta``.  The two rims are the circles of radius ``a = 1`` about ``C +- h eta`` in
+the plane spanned by ``xi, zeta``; the contact point P (eq. 4) is the lowest point of the
+rim at ``C - h~ eta``.
+
+matplotlib is imported only when a drawing function is called.
+"""
+
+from __future__ import annotations
+
+import math
+import shutil
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .disk import check_real
+from .equations import _geometry
+from .plotting import trajectory_series
+
+__all__ = ["DiskPose", "body_frame", "disk_pose", "poses", "draw_disk", "animate",
+           "writer_for"]
+
+
+def body_frame(psi: float, theta: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Unit vectors ``xi, eta, zeta`` of the frame C xi eta zeta in OXYZ (Figure 1)."""
+    sp, cp = math.sin(psi), math.cos(psi)
+    st, ct = math.sin(theta), math.cos(theta)
+    xi = np.array([cp, sp, 0.0])
+    eta = np.array([-sp * ct, cp * ct, st])
+    zeta = np.array([sp * st, -cp * st, ct])
+    return xi, eta, zeta
+
+
+@dataclass(frozen=True)
+class DiskPose:
+    """The drawn disk at one instant, in OXYZ (units of ``a``).
+
+    Attributes
+    ----------
+    center : (3,) ndarray
+        The centre C, ``Z_C = -z_P`` (eq. 7).
+    rims : (2, 3, n) ndarray
+        The rim circles about ``C - h eta`` (index 0) and ``C + h eta`` (index 1).
+    marker : (3, 3) ndarray
+        Body-fixed marker: the rim points at body angle 0 on face 0 and face 1, and the
+        point on face 1 opposite (so the line turns with ``phi``).
+    contact : (3,) ndarray
+        The contact point P of eq. (4)/(5): ``C + y_P y + z_P Z``.
+    axis : (3,) ndarray
+        ``eta``.
+    """
+
+    center: np.ndarray
+    rims: np.ndarray
+    marker: np.ndarray
+    contact: np.ndarray
+    axis: np.ndarray
+
+
+def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: float,
+              n: int = 48) -> DiskPose:
+    """Positions of the drawn disk for one state (eqs. 4, 5, 7)."""
+    h = check_real("h", h, low=0.0)
+    xi, eta, zeta = body_frame(psi, theta)
+    _, _, _, _, y_P, z_P = _geometry(h, theta)
+    y_P, z_P = float(y_P), float(z_P)
+    C = np.array([X_C, Y_C, -z_P])  # eq. (7)
+    # body-fixed radial directions: xi, zeta turned by phi about eta (Rodrigues, v _|_ eta)
+    cf, sf = math.cos(phi), math.sin(phi)
+    e1 = cf * xi - sf * zeta
+    e2 = sf * xi + cf * zeta
+    a = np.linspace(0.0, 2.0 * math.pi, n + 1)
+    ring = np.cos(a)[None, :] * e1[:, None] + np.sin(a)[None, :] * e2[:, None]
+    rims = np.stack([C[:, None] - h * eta[:, None] + ring, C[:, None] + h * eta[:, None] + ring])
+    marker = np.stack([C - h * eta + e1, C + h * eta + e1, C + h * eta - e1])
+    y_dir = np.array([-math.sin(psi), math.cos(psi), 0.0])
+    P = C + y_P * y_dir + np.array([0.0, 0.0, z_P])  # eq. (5): Z_P = Z_C + z_P = 0
+    return DiskPose(C, rims, marker, P, eta)
+
+
+def poses(traj, n_frames: int = 60, *, n: int = 48) -> tuple[np.ndarray, list[DiskPose]]:
+    """Frame times (uniform in ``t``) and the disk poses of a trajectory at them."""
+    t = np.asarray(traj.t, float)
+    tf = np.linspace(t[0], t[-1], max(2, int(n_frames)))
+    s = {k: np.interp(tf, t, trajectory_series(traj, k))
+         for k in ("X_C", "Y_C", "psi", "theta", "phi")}
+    h = traj.disk.h
+    return tf, [disk_pose(h, s["X_C"][i], s["Y_C"][i], s["psi"][i], s["theta"][i],
+                          s["phi"][i], n=n) for i in range(len(tf))]
+
+
+def _limits(traj, pad: float = 1.3):
+    XP, YP = trajectory_series(traj, "X_P"), trajectory_series(traj, "Y_P")
+    XC, YC = trajectory_series(traj, "X_C"), trajectory_series(traj, "Y_C")
+    xs = np.concatenate([XP, XC])
+    ys = np.concatenate([YP, YC])
+    cx, cy = 0.5 * (xs.min() + xs.max()), 0.5 * (ys.min() + ys.max())
+    half = 0.5 * max(xs.max() - xs.min(), ys.max() - ys.min()) + pad
+    return (cx - half, cx + half), (cy - half, cy + half), (0.0, 2.0 * pad + traj.disk.h)
+
+
+def draw_disk(ax, pose: DiskPose, *, face_color="#9ecae1", side_color="#4a7fb0",
+              marker_color="tab:red") -> dict:
+    """Draw one :class:`DiskPose` on a 3D axes: two faces, side surface, marker, P."""
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    out = {}
+    r0, r1 = pose.rims[0].T, pose.rims[1].T  # (n + 1, 3)
+    quads = [np.array([r0[i], r0[i + 1], r1[i + 1], r1[i]]) for i in range(len(r0) - 1)]
+    # one collection, so that matplotlib depth-sorts faces and side quads together
+    # body-fixed red sectors on both faces (the first eighth of the rim, from the marker),
+    # lifted slightly off the faces, so that the rotation phi is visible
+    m = max(2, (len(r0) - 1) // 8)
+    lift = 0.01 * pose.axis
+    c0, c1 = r0[:-1].mean(axis=0), r1[:-1].mean(axis=0)  # face centres C -+ h eta
+    sectors = [np.vstack([c0 - lift, r0[: m + 1] - lift]),
+               np.vstack([c1 + lift, r1[: m + 1] + lift])]
+    polys = [r0, r1] + quads + sectors
+    colors = [face_color, face_color] + [side_color] * len(quads) + [marker_color] * 2
+    edges = ["k", "k"] + [side_color] * len(quads) + [marker_color] * 2
+    widths = [0.6, 0.6] + [0.2] * len(quads) + [0.3, 0.3]
+    body = Poly3DCollection(polys, facecolors=colors, edgecolors=edges, linewidths=widths,
+                            alpha=1.0)
+    out["body"] = ax.add_collection3d(body)
+    (out["marker"],) = ax.plot(*pose.marker.T, color=marker_color, lw=2.0)
+    (out["center"],) = ax.plot(*pose.center[:, None], "o", color="k", ms=2)
+    (out["contact"],) = ax.plot(*pose.contact[:, None], "o", color="tab:red", ms=3)
+    return out
+
+
+def writer_for(path, fps: int):
+    """A matplotlib animation writer for ``path``: Pillow for ``.gif``, ffmpeg for ``.mp4``."""
+    from matplotlib import animation as mpl_animation
+
+    suffix = Path(path).suffix.lower()
+    if suffix == ".gif":
+        return mpl_animation.PillowWriter(fps=fps)
+    if suffix == ".mp4":
+        if shutil.which("ffmpeg") is None:
+            raise ValueError("out: writing .mp4 needs ffmpeg, which was not found; "
+                             "use a .gif file name instead")
+        return mpl_animation.FFMpegWriter(fps=fps)
+    raise ValueError(f"out must end in .gif or .mp4, got {str(path)!r}")
+
+
+def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
+            size: tuple[float, float] = (5.0, 4.4), title: str | None = None,
+            progress: Callable[[int, int], None] | None = None) -> Path:
+    """Write a 3D animation of ``traj`` (a :class:`~rollingdisk.simulate.Trajectory` or any
+    object with ``disk, ground, t, y``) to ``out`` (``.gif`` or ``.mp4``).
+
+    The disk is drawn as a cylinder of thickness ``2h`` with a body-fixed red marker (so
+    the rotation ``phi`` is visible); the path of the contact point P is traced on the
+    plane ``Z = 0`` up to the current time, the projection of C's path dashed.
+
+    Returns the path written.
+    """
+    n_frames = int(check_real("n_frames", n_frames, low=2))
+    fps = int(check_real("fps", fps, low=1))
+    out = Path(out)
+    writer = writer_for(out, fps)
+    from matplotlib.figure import Figure
+
+    tf, frames = poses(traj, n_frames)
+    t = np.asarray(traj.t, float)
+    XP, YP = trajectory_series(traj, "X_P"), trajectory_series(traj, "Y_P")
+    XC, YC = trajectory_series(traj, "X_C"), trajectory_series(traj, "Y_C")
+    (x0, x1), (y0, y1), (z0, z1) = _limits(traj)
+    fig = Figure(figsize=size)
+    ax = fig.add_subplot(1, 1, 1, projection="3d")
+    head = title if title is not None else f"{traj.ground} ground, h = {traj.disk.h:.4g}"
+    out.parent.mkdir(parents=True, exist_ok=True)
+    with writer.saving(fig, str(out), dpi):
+        for i, (ti, pose) in enumerate(zip(tf, frames, strict=True)):
+            ax.cla()
+            # the plane Z = 0 is the bottom pane of the axes (zlim starts at 0)
+            ax.zaxis.set_pane_color((0.85, 0.85, 0.85, 1.0))
+            k = int(np.searchsorted(t, ti, side="right"))
+            ax.plot(XP[:k], YP[:k], 0.0 * XP[:k], color="tab:red", lw=1.0)
+            ax.plot(XC[:k], YC[:k], 0.0 * XC[:k], color="tab:blue", lw=0.7, ls="--")
+            draw_disk(ax, pose)
+            ax.set_xlim(x0, x1)
+            ax.set_ylim(y0, y1)
+            ax.set_zlim(z0, z1)
+            ax.set_box_aspect((x1 - x0, y1 - y0, z1 - z0))
+            ax.set_xlabel("X")
+            ax.set_ylabel("Y")
+            ax.set_zlabel("Z")
+            ax.view_init(elev=28, azim=-60)
+            ax.set_title(f"{head}   t = {ti:6.2f}", fontsize=9)
+            writer.grab_frame()
+            if progress:
+                progress(i + 1, len(tf))
+    return out
