@@ -298,3 +298,23 @@ def kane_energy_rate(ground, h, theta, w1, w2, w3, **kw):
     qd = np.array(m.qdot(h, *q, *u), dtype=float)
     terms = np.concatenate([gq * qd, gu * ud])
     return float(np.sum(terms)), float(np.sum(np.abs(terms)))
+
+
+def kane_rhs(ground, h):
+    """``f(t, x)`` of Kane's equations in Kane's own state layout, for ``solve_ivp``.
+
+    rough: ``x = [X_C, Y_C, psi, theta, phi, omega1, omega2, omega3]`` (``v_Cx, v_Cy``
+    from the no-slip constraints); smooth: the same followed by ``v_Cx, v_Cy`` (velocity of
+    C in Cxyz).  Positions and angles advance by sympy's kinematic equations, not eqs. (1)-(2).
+    """
+
+    def f(t, x):
+        q = tuple(x[:5])
+        vx, vy = (x[8], x[9]) if ground == "smooth" else (0.0, 0.0)
+        u = _full_speeds(ground, h, q[3], x[5], x[6], x[7], vx, vy)
+        m = kane_model(_sign(h, q[3]), ground)
+        qd = np.array(m.qdot(h, *q, *u), dtype=float)
+        ud = _udot(ground, h, q, u)
+        return np.concatenate([qd, ud[:3]] if ground == "rough" else [qd, ud])
+
+    return f

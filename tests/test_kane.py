@@ -165,3 +165,51 @@ def test_library_energy_is_conserved_along_library_equations(ground):
         rate = (rollingdisk.energy(d, ground, y + eps * f)
                 - rollingdisk.energy(d, ground, y - eps * f)) / (2 * eps)
         assert abs(rate) <= 1e-7 * (1.0 + np.abs(f).max() ** 2), (s, rate)
+
+
+# -- trajectories -----------------------------------------------------------------------
+def _trajectory_difference(ground, h, x0, t_end):
+    """Max difference between Kane's and the library's trajectories (library layout)."""
+    from scipy.integrate import solve_ivp
+
+    from kane_model import kane_rhs
+
+    t = np.linspace(0.0, t_end, 201)
+    opts = {"method": "DOP853", "t_eval": t, "rtol": 1e-12, "atol": 1e-12}
+    kane = solve_ivp(kane_rhs(ground, h), (0.0, t_end), x0, **opts)
+    assert kane.success
+    K = kane.y
+    assert np.all(np.abs(K[3]) > 0.05) and np.all(np.abs(K[3]) < 1.4)
+    assert np.all(np.sign(K[3]) == np.sign(x0[3])), "no passage through theta = 0 (impact)"
+    if ground == "rough":
+        y0 = np.array(x0)
+        kane_lib_layout = K
+    else:
+        X, Y, psi, theta, phi, w1, w2, w3, vx, vy = x0
+        y0 = smooth_state((h, theta, w1, w2, w3, vx, vy, X, Y, psi, phi))
+        VX = K[8] * np.cos(K[2]) - K[9] * np.sin(K[2])
+        VY = K[8] * np.sin(K[2]) + K[9] * np.cos(K[2])
+        kane_lib_layout = np.vstack([K[0], K[1], VX, VY, K[2:8]])
+    lib = solve_ivp(rollingdisk.equations_of_motion(Disk(h), ground), (0.0, t_end), y0, **opts)
+    assert lib.success
+    return float(np.abs(kane_lib_layout - lib.y).max())
+
+
+THICK_CASES = [
+    ("rough", 0.5, [0.2, -0.1, 0.3, 0.6, 0.0, 0.3, 3.0, 0.8]),
+    ("rough", 1.2, [0.0, 0.0, 0.0, -0.9, 0.0, -0.2, 2.5, -1.0]),
+    ("smooth", 0.3, [0.1, 0.2, 0.0, 0.5, 0.0, 0.2, 3.0, 1.0, 0.4, -0.3]),
+    ("smooth", 0.8, [0.0, 0.0, 1.0, -0.7, 0.0, 0.1, -2.0, 0.5, -1.0, 0.2]),
+]
+
+
+@pytest.mark.parametrize(("ground", "h", "x0"), THICK_CASES)
+def test_trajectory_matches_kane(ground, h, x0):
+    """Integrated with both right-hand sides (solve_ivp DOP853, tol 1e-12) for 5 time units."""
+    assert _trajectory_difference(ground, h, x0, 5.0) <= 1e-8
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("ground", "h", "x0"), THICK_CASES)
+def test_trajectory_matches_kane_long(ground, h, x0):
+    assert _trajectory_difference(ground, h, x0, 20.0) <= 1e-8
