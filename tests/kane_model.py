@@ -25,7 +25,8 @@ results map one-to-one onto the paper's variables:
 * Smooth ground: speeds ``omega1..3, v_Cx, v_Cy``, all independent; gravity is the only
   contributing force.
 
-Each derivation (sign of theta x ground) takes about a second; it is cached.
+Each derivation (sign of theta x ground) takes under a second; it is cached (functools.cache),
+so all tests of a session share it.
 """
 
 from __future__ import annotations
@@ -47,6 +48,8 @@ __all__ = [
     "kane_energy",
     "kane_energy_rate",
     "kane_dependent_speeds",
+    "kane_state_derivatives",
+    "kane_rhs",
 ]
 
 h_sym = sm.Symbol("h", nonnegative=True)
