@@ -110,11 +110,12 @@ def _class_cmap():
     return ListedColormap(CLASS_COLORS), BoundaryNorm([-0.5, 0.5, 1.5, 2.5], 3)
 
 
-def _class_legend(ax, codes_present=(NO_MOTION, UNSTABLE, STABLE), **kw):
+def _class_legend(ax, codes_present=(NO_MOTION, UNSTABLE, STABLE), labels=None, **kw):
     from matplotlib.patches import Patch
 
+    labels = labels or {}
     handles = [Patch(facecolor=CLASS_COLORS[c], edgecolor="k", linewidth=0.5,
-                     label=CLASS_LABELS[c]) for c in codes_present]
+                     label=labels.get(c, CLASS_LABELS[c])) for c in codes_present]
     return ax.legend(handles=handles, **kw)
 
 
@@ -212,7 +213,9 @@ def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200)
     ax.set_ylabel(LABELS["r_C"])
     ax.set_title(title if title is not None else f"{ground} ground, $h = {h:.4g}$")
     if legend:
-        leg1 = _class_legend(ax, present, loc="lower left", fontsize="x-small", framealpha=0.9)
+        labels = {} if ground == "rough" else {NO_MOTION: "no steady motion (C is at rest)"}
+        leg1 = _class_legend(ax, present, labels, loc="lower left", fontsize="x-small",
+                             framealpha=0.9)
         ax.add_artist(leg1)
         ax.legend(loc="upper right", fontsize="x-small", framealpha=0.9)
     return MapPlot(ax, th, rc, codes, artists)
@@ -263,7 +266,7 @@ def plot_stability_map(h: float, ground: str, ax=None, *, n=(240, 200),
     ax.set_ylabel(LABELS["omega30"])
     ax.set_title(title if title is not None else f"{ground} ground, $h = {h:.4g}$")
     if legend:
-        leg1 = _class_legend(ax, (UNSTABLE, STABLE), loc="lower left", fontsize="x-small",
+        leg1 = _class_legend(ax, (UNSTABLE, STABLE), loc="center right", fontsize="x-small",
                              framealpha=0.9)
         ax.add_artist(leg1)
         ax.legend(loc="upper right", fontsize="x-small", framealpha=0.9)

@@ -1,0 +1,415 @@
+"""The atlas of one disk: thresholds, maps, two simulated steady motions, one HTML page.
+
+:func:`build_atlas` is the orchestration behind ``rollingdisk atlas``: for a disk of
+half-thickness ``h`` it writes into a folder
+
+* ``thresholds.json`` and a table of the stability thresholds (eqs. 42, 43, 53, 57 as
+  corrected in :mod:`rollingdisk.stability`),
+* existence maps (rough ground: ``(theta0, r_C)``, Figure 4 style; smooth ground: C at
+  rest), stability maps in ``(theta0, omega30)`` on both grounds, and the regions stable
+  for every ``omega30`` (Figures 5, 7) with this disk's ``h`` marked,
+* one stable and one unstable steady circle on rough ground, simulated from a small tilt
+  perturbation, with their plots (paths of C and P, ``theta(t)``, energy error, contact
+  force) and a 3D animation each,
+* ``index.html`` showing it all, with relative image paths and no external resources.
+
+It sits outside the numeric core (uses matplotlib through :mod:`rollingdisk.plotting`).
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import math
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .disk import Disk, check_ground, check_real
+
+__all__ = ["AtlasResult", "build_atlas", "choose_motions", "steady_trajectory",
+           "DEFAULT_H"]
+
+#: Default half-thickness: close to a commercial Euler's disk (radius 37.5 mm, 12.7 mm
+#: thick gives h = 0.17).
+DEFAULT_H = 0.17
+
+
+@dataclass(frozen=True)
+class AtlasResult:
+    """What :func:`build_atlas` wrote.
+
+    Attributes
+    ----------
+    out_dir : Path
+    index : Path
+        The ``index.html`` page.
+    files : tuple of Path
+        Every file written (images, animations, JSON), index excluded.
+    h : float
+    timings : dict
+        Wall time in seconds of each step.
+    motions : dict
+        ``{"stable": {...}, "unstable": {...}}``: the chosen steady motions, their
+        closed-form stability and what the simulation showed.
+    """
+
+    out_dir: Path
+    index: Path
+    files: tuple
+    h: float
+    timings: dict = field(default_factory=dict)
+    motions: dict = field(default_factory=dict)
+
+
+class _Progress:
+    """Progress lines on a stream (stderr by default): ``[k/n] step ... 1.2 s``."""
+
+    def __init__(self, n_steps: int, stream=None, enabled: bool = True):
+        self.n = n_steps
+        self.k = 0
+        self.stream = sys.stderr if stream is None else stream
+        self.enabled = enabled
+        self.t0 = time.perf_counter()
+        self.timings: dict[str, float] = {}
+
+    def step(self, name: str):
+        self.k += 1
+        self._name = name
+        self._t = time.perf_counter()
+        if self.enabled:
+            print(f"[{self.k}/{self.n}] {name} ...", end="", file=self.stream, flush=True)
+
+    def done(self, note: str = ""):
+        dt = time.perf_counter() - self._t
+        self.timings[self._name] = dt
+        if self.enabled:
+            extra = f" ({note})" if note else ""
+            print(f" {dt:.1f} s{extra}", file=self.stream, flush=True)
+
+    def total(self) -> float:
+        return time.perf_counter() - self.t0
+
+
+# ------------------------------------------------------------------------------ motions
+def steady_trajectory(h: float, ground: str, theta0: float, *, Omega0: float | None = None,
+                      r_C: float | None = None, r_P: float | None = None,
+                      perturb: float = 0.0, t_end: float = 20.0, n_out: int = 1200):
+    """Build the steady motion of eqs. (26)-(35) and simulate it from a tilt perturbation.
+
+    Returns ``(motion, stability, trajectory)``.  ``perturb`` is added to ``theta(0)``;
+    the trajectory is sampled at ``n_out`` equally spaced times in ``[0, t_end]``.
+    """
+    from .simulate import simulate_steady
+    from .stability import stability
+    from .steady import steady_motion
+
+    h = check_real("h", h, low=0.0)
+    check_ground(ground)
+    t_end = check_real("t_end", t_end, low=0.0, low_open=True)
+    disk = Disk(h)
+    motion = steady_motion(disk, ground, theta0, Omega0=Omega0, r_C=r_C, r_P=r_P)
+    stab = stability(motion)
+    traj = simulate_steady(motion, t_end, perturb=perturb,
+                           t_eval=np.linspace(0.0, t_end, max(2, int(n_out))))
+    return motion, stab, traj
+
+
+def choose_motions(h: float) -> dict:
+    """One clearly stable and one clearly unstable steady circle on rough ground.
+
+    Stable: ``theta0 = 0.5`` rad with ``omega30 = 1.5`` (above the paper's uniform bound
+    ``omega30^2 > 1``), checked with the closed form.  Unstable: on a grid of
+    ``(theta0, omega30)`` the point with ``varpi^2 < 0`` whose growth rate is closest to
+    0.35 (fast enough to show within a short simulation, slow enough to be seen
+    starting from the steady motion).  Returns ``{"stable": (theta0, Omega0), "unstable":
+    (theta0, Omega0)}``.
+    """
+    from .stability import varpi2_circle
+
+    h = check_real("h", h, low=0.0)
+    out = {}
+    th_s, w_s = 0.5, 1.5
+    v = float(varpi2_circle("rough", h, th_s, w_s))
+    if not v > 0:  # fall back: the largest varpi^2 on a grid
+        th_s, w_s = _best_on_grid(h, lambda v2: np.where(v2 > 0, v2, -np.inf))
+    out["stable"] = (th_s, w_s / math.cos(th_s))
+    th_u, w_u = _best_on_grid(h, lambda v2: np.where(v2 < 0, -np.abs(np.sqrt(
+        np.abs(v2)) - 0.35), -np.inf))
+    out["unstable"] = (th_u, w_u / math.cos(th_u))
+    return out
+
+
+def _best_on_grid(h, score):
+    from .stability import varpi2_circle
+
+    th = np.linspace(0.05, 1.4, 55)
+    w = np.linspace(0.15, 2.0, 38)
+    TH, W = np.meshgrid(th, w)
+    with np.errstate(all="ignore"):
+        v2 = np.asarray(varpi2_circle("rough", h, TH, W), float)
+        s = score(np.where(np.isfinite(v2), v2, np.nan))
+    s = np.where(np.isfinite(s), s, -np.inf)
+    i = np.unravel_index(int(np.argmax(s)), s.shape)
+    if not np.isfinite(s[i]):
+        raise ValueError(f"h = {h:g}: found no steady circle of the requested kind")
+    return float(TH[i]), float(W[i])
+
+
+# ------------------------------------------------------------------------------ atlas
+def _save(fig, path: Path, dpi: int, files: list):
+    fig.savefig(path, dpi=dpi)
+    files.append(path)
+    return path
+
+
+def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
+                progress: bool = True, stream=None) -> AtlasResult:
+    """Write the atlas of the disk of half-thickness ``h`` into ``out_dir``.
+
+    Parameters
+    ----------
+    h : float
+        Half-thickness in units of the radius (default 0.17, about a commercial Euler's
+        disk).
+    out_dir : path
+        Folder to write (created if needed).
+    quick : bool
+        Coarse grids, short simulations and few animation frames (for tests).
+    progress : bool
+        Print one line per step on ``stream`` (stderr by default).
+
+    Returns
+    -------
+    AtlasResult
+    """
+    import matplotlib
+
+    if matplotlib.get_backend().lower() != "agg":
+        matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    from . import plotting
+    from .animation import animate
+    from .stability import thresholds
+
+    h = check_real("h", h, low=0.0)
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    files: list[Path] = []
+    dpi = 60 if quick else 90
+    n_map = (60, 50) if quick else (220, 180)
+    pr = _Progress(7, stream=stream, enabled=progress)
+
+    # 1. thresholds ------------------------------------------------------------------
+    pr.step("thresholds")
+    thr = thresholds(h).as_dict()
+    (out / "thresholds.json").write_text(json.dumps({"h": h, **_floats(thr)}, indent=2))
+    files.append(out / "thresholds.json")
+    pr.done()
+
+    # 2. existence maps -------------------------------------------------------------
+    pr.step("existence maps")
+    fig = Figure(figsize=(10.0, 4.2))
+    axs = fig.subplots(1, 2)
+    m_ex = plotting.plot_existence_map(h, "rough", axs[0], n=n_map,
+                                       title=f"rough ground, $h={h:.4g}$")
+    plotting.plot_existence_map(h, "smooth", axs[1], n=(n_map[0], 40),
+                                title=f"smooth ground, $h={h:.4g}$")
+    fig.tight_layout()
+    _save(fig, out / "existence.png", dpi, files)
+    pr.done(f"stable share {m_ex.share(plotting.STABLE):.2f}")
+
+    # 3. stability maps -----------------------------------------------------------------
+    pr.step("stability maps")
+    fig = Figure(figsize=(10.0, 4.2))
+    axs = fig.subplots(1, 2)
+    for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
+        plotting.plot_stability_map(h, ground, ax, n=n_map,
+                                    omega30_max=2.0 if ground == "rough" else 2.5)
+    fig.tight_layout()
+    _save(fig, out / "stability.png", dpi, files)
+    pr.done()
+
+    # 4. stable for every omega30 --------------------------------------------------------
+    pr.step("regions stable for every omega30")
+    fig = Figure(figsize=(10.0, 4.2))
+    axs = fig.subplots(1, 2)
+    h_top = max(1.5, 2.0 * h)
+    for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
+        plotting.plot_all_omega30_stable(ground, ax, n=n_map, h_range=(0.0, h_top),
+                                         mark_h=h)
+    fig.tight_layout()
+    _save(fig, out / "all_omega30.png", dpi, files)
+    pr.done()
+
+    # 5./6. two steady motions, simulated -----------------------------------------------
+    chosen = choose_motions(h)
+    motions = {}
+    for kind in ("stable", "unstable"):
+        pr.step(f"{kind} steady circle: simulate, plot, animate")
+        theta0, Omega0 = chosen[kind]
+        t_end = 12.0 if quick else 30.0
+        perturb = 0.02 if kind == "stable" else 1e-3
+        motion, stab, traj = steady_trajectory(h, "rough", theta0, Omega0=Omega0,
+                                               perturb=perturb, t_end=t_end,
+                                               n_out=300 if quick else 1500)
+        fig = Figure(figsize=(9.0, 6.5))
+        plotting.plot_trajectory(traj, fig, theta0=theta0,
+                                 title=f"{kind} steady circle, rough ground, h = {h:.4g}")
+        _save(fig, out / f"motion_{kind}.png", dpi, files)
+        gif = animate(traj, out / f"motion_{kind}.gif", n_frames=12 if quick else 60,
+                      fps=12, dpi=55 if quick else 70,
+                      title=f"{kind} circle, h = {h:.4g}")
+        files.append(gif)
+        motions[kind] = _motion_record(motion, stab, traj, perturb)
+        pr.done(f"status {motions[kind]['status']}")
+
+    # 7. index page ------------------------------------------------------------------------
+    pr.step("index.html")
+    index = out / "index.html"
+    index.write_text(_index_html(h, thr, motions, [p.name for p in files]), encoding="utf-8")
+    pr.done()
+    if progress:
+        print(f"atlas written to {index} in {pr.total():.1f} s", file=pr.stream, flush=True)
+    return AtlasResult(out, index, tuple(files), h, dict(pr.timings), motions)
+
+
+def _floats(d):
+    if isinstance(d, dict):
+        return {k: _floats(v) for k, v in d.items()}
+    return float(d)
+
+
+def _motion_record(motion, stab, traj, perturb) -> dict:
+    from .plotting import trajectory_series
+
+    theta = trajectory_series(traj, "theta")
+    E = trajectory_series(traj, "E")
+    rec = {
+        "theta0": float(motion.theta0), "Omega0": float(motion.Omega0),
+        "omega20": float(motion.omega20), "omega30": float(motion.omega30),
+        "r_C": float(motion.r_C), "r_P": float(motion.r_P),
+        "varpi2": float(stab.varpi2), "stable": bool(stab.stable),
+        "period": None if stab.period is None else float(stab.period),
+        "growth_rate": None if stab.growth_rate is None else float(stab.growth_rate),
+        "perturb": float(perturb), "status": str(getattr(traj, "status", "completed")),
+        "t_end": float(np.asarray(traj.t)[-1]),
+        "max_theta_dev": float(np.max(np.abs(theta - motion.theta0))),
+        "energy_drift": float(np.max(np.abs(E - E[0]))),
+    }
+    return rec
+
+
+_CSS = """body{font-family:sans-serif;max-width:1050px;margin:2em auto;padding:0 1em;
+color:#222;line-height:1.45}h1{font-size:1.6em}h2{border-bottom:1px solid #ccc;
+padding-bottom:.2em;margin-top:1.8em}table{border-collapse:collapse;margin:.8em 0}
+td,th{border:1px solid #bbb;padding:.25em .6em;text-align:right}th{background:#eee}
+td:first-child,th:first-child{text-align:left}img{max-width:100%;border:1px solid #ddd}
+.pair{display:flex;gap:1em;flex-wrap:wrap;align-items:flex-start}.note{color:#555;
+font-size:.92em}code{background:#f4f4f4;padding:0 .2em}"""
+
+
+def _fmt(x, nd=4):
+    if x is None:
+        return "&ndash;"
+    if isinstance(x, bool):
+        return "yes" if x else "no"
+    return f"{x:.{nd}g}"
+
+
+def _index_html(h: float, thr: dict, motions: dict, names: list) -> str:
+    e = html.escape
+    rows = [
+        ("rough", "straight line (SE position), eq. (42)", "&omega;<sub>20</sub>&sup2; &gt;",
+         thr["rough"]["straight_line_omega20_sq"]),
+        ("rough", "circle in the SE position, eq. (43)", "&omega;<sub>30</sub>&sup2; &gt;",
+         thr["rough"]["se_circle_omega30_sq"]),
+        ("smooth", "straight line, eq. (53)", "&omega;<sub>20</sub>&sup2; &gt;",
+         thr["smooth"]["straight_line_omega20_sq"]),
+        ("smooth", "spin in place, eq. (57)", "&omega;<sub>30</sub>&sup2; &gt;",
+         thr["smooth"]["spin_omega30_sq"]),
+    ]
+    thr_rows = "\n".join(
+        f"<tr><td>{g}</td><td>{what}</td><td>{cond} {_fmt(v)}</td>"
+        f"<td>{_fmt(math.sqrt(v))}</td></tr>" for g, what, cond, v in rows)
+
+    def motion_block(kind):
+        m = motions[kind]
+        verdict = (f"stable: &varpi;&sup2; = {_fmt(m['varpi2'])}, period "
+                   f"{_fmt(m['period'])}" if m["stable"] else
+                   f"unstable: &varpi;&sup2; = {_fmt(m['varpi2'])}, growth rate "
+                   f"{_fmt(m['growth_rate'])}")
+        return f"""
+<h3>{kind.capitalize()} steady circle</h3>
+<table><tr><th>&theta;<sub>0</sub> [rad]</th><th>&Omega;<sub>0</sub></th>
+<th>&omega;<sub>20</sub></th><th>&omega;<sub>30</sub></th><th>r<sub>C</sub></th>
+<th>r<sub>P</sub></th></tr>
+<tr><td>{_fmt(m['theta0'])}</td><td>{_fmt(m['Omega0'])}</td><td>{_fmt(m['omega20'])}</td>
+<td>{_fmt(m['omega30'])}</td><td>{_fmt(m['r_C'])}</td><td>{_fmt(m['r_P'])}</td></tr></table>
+<p>Closed form (section 4.1): {verdict}. Simulated from &theta;(0) = &theta;<sub>0</sub> +
+{_fmt(m['perturb'], 2)} until t = {_fmt(m['t_end'])} (status <code>{e(m['status'])}</code>):
+largest |&theta; &minus; &theta;<sub>0</sub>| = {_fmt(m['max_theta_dev'], 3)}, largest energy
+error {_fmt(m['energy_drift'], 2)} mga.</p>
+<div class="pair"><img src="motion_{kind}.png" alt="{kind} motion plots" width="620">
+<img src="motion_{kind}.gif" alt="{kind} motion animation" width="350"></div>"""
+
+    return f"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8">
+<title>rollingdisk atlas, h = {h:.4g}</title><style>{_CSS}</style></head><body>
+<h1>Atlas of a disk of half-thickness h = {h:.4g}</h1>
+<p>A homogeneous disk of radius a and thickness 2h&nbsp;=&nbsp;{2 * h:.4g}&nbsp;a on a horizontal
+plane, after M. Batista, <i>Steady Motion of a Rigid Disk of Finite Thickness on a Horizontal
+Plane</i>. Units: m = a = g = 1 (time in &radic;(a/g)). &theta;<sub>0</sub> is the tilt from the
+vertical, &omega;<sub>30</sub> = &Omega;<sub>0</sub> cos&theta;<sub>0</sub> the spin about the
+vertical seen in the frame C&xi;&eta;&zeta;, r<sub>C</sub> the signed radius of the circle of the
+centre C (positive: the disk leans toward the centre A of the circle). The static equilibrium
+(SE) tilt is tan&theta;<sub>0</sub> = h, &theta;<sub>0</sub> = {math.atan(h):.4g} rad.
+All numbers come from the library (formulas derived and checked; see <code>docs/errata.md</code>
+for where they differ from the printed paper).</p>
+
+<h2>Stability thresholds</h2>
+<table><tr><th>ground</th><th>steady motion</th><th>stable if</th><th>threshold of |&omega;|</th>
+</tr>
+{thr_rows}</table>
+
+<h2>Where steady circles exist</h2>
+<p>Rough ground: in the (&theta;<sub>0</sub>, r<sub>C</sub>) plane a steady circle exists
+where &Omega;<sub>0</sub>&sup2; of eq. (31) is positive; dark: none, gray: it exists but is
+unstable (&varpi;&sup2; &lt; 0), white: stable. The red curve is r<sub>C</sub>* of eq. (32),
+where the denominator of eq. (31) vanishes. Smooth ground: there is no friction, so the centre
+C cannot move on a circle; every steady circle has r<sub>C</sub> = 0 (the contact point P
+turns about C at the radius r<sub>P</sub> = y<sub>P0</sub>), for every &theta;<sub>0</sub> and
+every &Omega;<sub>0</sub>.</p>
+<img src="existence.png" alt="existence maps">
+
+<h2>Stability of steady circles</h2>
+<p>For every &theta;<sub>0</sub> and every &omega;<sub>30</sub> &ne; 0 a steady circle exists
+on either ground (&omega;<sub>20</sub> from eq. (44) or (54)). Gray: &varpi;&sup2; &lt; 0
+(unstable), white: stable. The dotted line is the paper's uniform bound above which every
+steady circle is stable (&omega;<sub>30</sub>&sup2; = 1 rough, 2 smooth).</p>
+<img src="stability.png" alt="stability maps">
+
+<h2>Stable for every &omega;<sub>30</sub></h2>
+<p>White: at this (&theta;<sub>0</sub>, h) the steady circle is stable whatever
+&omega;<sub>30</sub> (conditions (46) and (59); the paper's Figures 5 and 7). The blue line
+marks this disk.</p>
+<img src="all_omega30.png" alt="regions stable for every omega30">
+
+<h2>Two steady circles, simulated</h2>
+<p>Each motion starts on the steady circle with the tilt perturbed a little, and is integrated
+with the full nonlinear equations (rough ground: eqs. (1), (2), (37), (38)). The plots show
+the paths of C and of the contact point P, &theta;(t), the energy error and the contact force
+(F<sub>z</sub> &gt; 0 keeps contact). The animation draws the disk as a cylinder of thickness
+2h; the red sectors are fixed in the body, so they show the rotation &phi;; the red line on the
+plane is the path of P.</p>
+{motion_block("stable")}
+{motion_block("unstable")}
+
+<h2>Files</h2>
+<p class="note">{" &middot; ".join(f'<a href="{e(n)}">{e(n)}</a>' for n in names)}</p>
+</body></html>
+"""
