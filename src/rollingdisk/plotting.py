@@ -228,9 +228,12 @@ def plot_stability_map(h: float, ground: str, ax=None, *, n=(240, 200),
 
     For every ``theta0`` and ``omega30 != 0`` a steady circle exists on either ground
     (``omega20`` follows from eq. 44 rough / eq. 54 smooth), so the map has two classes:
-    gray unstable, white stable.  ``values`` holds the class codes; the dashed horizontal
-    line is the paper's uniform bound (``omega30^2 = 1`` rough, ``2`` smooth), above which
-    the conclusion says every steady motion is stable.
+    gray unstable, white stable.  ``values`` holds the class codes; the dotted horizontal
+    line is the uniform bound above which every steady circle is stable whatever ``h`` and
+    ``theta0``: ``omega30^2 = 1`` on rough ground (as the paper concludes) and
+    ``omega30^2 = 4`` on smooth ground (the paper's conclusion prints ``2``, but its own
+    section 4.2 puts the top of the surface ``varpi^2 = 0`` at ``omega30 = 2``, h = 0;
+    see ``docs/figures.md``).
     """
     from .stability import varpi2_circle
 
@@ -251,12 +254,13 @@ def plot_stability_map(h: float, ground: str, ax=None, *, n=(240, 200),
         if np.nanmin(v2) < 0 < np.nanmax(v2):
             artists["contour"] = ax.contour(th, w, v2, levels=[0.0], colors="k",
                                             linewidths=0.8)
-    bound = 1.0 if ground == "rough" else math.sqrt(2.0)
+    # uniform bound: the supremum of the surface varpi^2 = 0 over (theta0, h)
+    bound = 1.0 if ground == "rough" else 2.0
     if bound <= omega30_max:
-        artists["paper_bound"] = ax.axhline(
+        artists["uniform_bound"] = ax.axhline(
             bound, color="tab:purple", ls=":", lw=1.2,
-            label=("paper: $\\omega_{30}^2=1$" if ground == "rough"
-                   else "paper: $\\omega_{30}^2=2$"))
+            label=(r"$\omega_{30}^2=" + ("1" if ground == "rough" else "4")
+                   + r"$: stable above for all $h,\theta_0$"))
     if h > 0:
         artists["se"] = ax.axvline(math.atan(h), color="tab:blue", ls="--", lw=1.0,
                                    label=r"SE: $\tan\theta_0=h$")
