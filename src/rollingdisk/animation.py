@@ -186,6 +186,10 @@ def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
     with writer.saving(fig, str(out), dpi):
         for i, (ti, pose) in enumerate(zip(tf, frames, strict=True)):
             ax.cla()
+            ax.set_autoscale_on(False)  # fixed limits: no autoscaling from the drawn parts
+            ax.set_xlim(x0, x1)
+            ax.set_ylim(y0, y1)
+            ax.set_zlim(z0, z1)
             # the plane Z = 0 is the bottom pane of the axes (zlim starts at 0)
             ax.zaxis.set_pane_color((0.85, 0.85, 0.85, 1.0))
             k = int(np.searchsorted(t, ti, side="right"))
