@@ -1,0 +1,128 @@
+"""`rollingdisk atlas`, `figures`, `map`, `animate`: outputs exist, are referenced, make sense.
+
+Sources of truth: the index page may reference only files that exist (and no external
+resources); the chosen "stable" motion stays near its steady tilt and the "unstable" one
+departs from it, as the closed form says; the CLI contract (exit 2, one line).
+"""
+
+import json
+import re
+import time
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import pytest  # noqa: E402
+
+from rollingdisk.atlas import build_atlas, choose_motions  # noqa: E402
+from rollingdisk.cli import main  # noqa: E402
+
+
+def _referenced(index_html: str):
+    return re.findall(r'(?:src|href)="([^"]+)"', index_html)
+
+
+@pytest.fixture(scope="module")
+def quick_atlas(tmp_path_factory):
+    out = tmp_path_factory.mktemp("atlas")
+    t0 = time.perf_counter()
+    result = build_atlas(0.17, out, quick=True, progress=False)
+    return result, time.perf_counter() - t0
+
+
+def test_atlas_index_references_only_existing_files(quick_atlas):
+    result, _ = quick_atlas
+    html = result.index.read_text(encoding="utf-8")
+    refs = _referenced(html)
+    assert refs, "the index references nothing"
+    for ref in refs:
+        assert "://" not in ref and not ref.startswith("/"), ref  # relative, local
+        assert (result.out_dir / ref).is_file(), ref
+    for name in ("existence.png", "stability.png", "all_omega30.png", "motion_stable.png",
+                 "motion_unstable.png", "motion_stable.gif", "motion_unstable.gif"):
+        assert name in refs
+    assert "<link" not in html and "<script" not in html
+
+
+def test_atlas_thresholds_and_motions(quick_atlas):
+    result, _ = quick_atlas
+    thr = json.loads((result.out_dir / "thresholds.json").read_text())
+    assert thr["h"] == 0.17
+    assert set(thr["rough"]) == {"straight_line_omega20_sq", "se_circle_omega30_sq"}
+    st, un = result.motions["stable"], result.motions["unstable"]
+    assert st["stable"] and not un["stable"]
+    # stable: the tilt stays within a few times the perturbation; unstable: it grows
+    assert st["max_theta_dev"] < 5 * st["perturb"]
+    assert un["max_theta_dev"] > 10 * un["perturb"]
+    assert st["energy_drift"] < 1e-6 and un["energy_drift"] < 1e-6
+
+
+def test_atlas_progress_on_stderr(tmp_path, capsys):
+    assert main(["atlas", "--h", "0.3", "--out", str(tmp_path), "--quick"]) == 0
+    captured = capsys.readouterr()
+    assert "[1/7]" in captured.err and "[7/7]" in captured.err
+    assert captured.out.strip().endswith("index.html")
+
+
+@pytest.mark.parametrize("h", [0.0, 0.17, 0.9, 3.0])
+def test_choose_motions_for_any_disk(h):
+    from rollingdisk.stability import varpi2_circle
+
+    m = choose_motions(h)
+    import math
+
+    th, O = m["stable"]
+    assert varpi2_circle("rough", h, th, O * math.cos(th)) > 0
+    th, O = m["unstable"]
+    assert varpi2_circle("rough", h, th, O * math.cos(th)) < 0
+
+
+@pytest.mark.slow
+def test_atlas_default_under_two_minutes(tmp_path):
+    t0 = time.perf_counter()
+    result = build_atlas(out_dir=tmp_path, progress=False)
+    wall = time.perf_counter() - t0
+    assert wall < 120.0
+    for ref in _referenced(result.index.read_text(encoding="utf-8")):
+        assert (tmp_path / ref).is_file()
+
+
+# ------------------------------------------------------------------------------ CLI
+def test_cli_map_kinds(tmp_path, capsys):
+    from PIL import Image
+
+    for kind in ("existence", "stability", "all-omega30"):
+        out = tmp_path / f"{kind}.png"
+        assert main(["map", "--ground", "rough", "--h", "0.17", "--kind", kind,
+                     "--out", str(out), "--dpi", "40"]) == 0
+        with Image.open(out) as im:
+            assert im.size[0] > 100
+
+
+def test_cli_figures_subset(tmp_path, capsys):
+    assert main(["figures", "--out", str(tmp_path), "--scale", "0.1", "--dpi", "40",
+                 "--only", "fig4", "fig7"]) == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fig4.png", "fig7.png"]
+
+
+def test_cli_animate(tmp_path, capsys):
+    out = tmp_path / "m.gif"
+    assert main(["animate", "--theta0", "30deg", "--Omega0", "2", "--t-end", "2",
+                 "--frames", "3", "--dpi", "40", "--out", str(out)]) == 0
+    assert out.is_file()
+    assert "stable" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("argv,needle", [
+    (["map", "--ground", "rough", "--h", "-1", "--kind", "stability", "--out", "x.png"], "h"),
+    (["map", "--ground", "icy", "--kind", "stability", "--out", "x.png"], "ground"),
+    (["figures", "--out", "x", "--only", "fig3"], "fig4"),
+    (["animate", "--theta0", "0.3", "--Omega0", "1", "--out", "m.avi"], "gif"),
+    (["animate", "--theta0", "0.3", "--out", "m.gif"], "Omega0"),
+])
+def test_cli_errors_one_line_exit_2(tmp_path, monkeypatch, capsys, argv, needle):
+    monkeypatch.chdir(tmp_path)
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and needle in err
