@@ -41,7 +41,7 @@ def _text(ax):
 def test_existence_boundary_is_r_C_star(h):
     """Eq. (32) and the text after it: for tan(theta0) < h a steady circle exists iff
     r_C < r_C*, for tan(theta0) > h iff r_C > r_C*."""
-    m = plotting.plot_existence_map(h, "rough", n=(50, 60))
+    m = plotting.plot_existence_map(h, "rough", n=(50, 60), r_C_scale="linear")
     TH, RC = np.meshgrid(m.x, m.y)
     p = np.tan(TH)
     star = -np.cos(TH) * ((3 + 4 * h * h) * p - 6 * h) / (6 * (3 + 2 * h * p))  # eq. (32)
@@ -58,7 +58,8 @@ def test_existence_boundary_is_r_C_star(h):
 def test_existence_map_thin_disk_large_radius_unstable_small_tilt():
     """h = 0 (Figure 4a): a thin disk on a wide circle (r_C > 0) with small tilt is
     unstable, with large tilt stable; both exist."""
-    m = plotting.plot_existence_map(0.0, "rough", n=(90, 60), r_C_range=(0.5, 1.0))
+    m = plotting.plot_existence_map(0.0, "rough", n=(90, 60), r_C_range=(0.5, 1.0),
+                                    r_C_scale="linear")
     TH, _ = np.meshgrid(m.x, m.y)
     assert m.share(NO_MOTION) == 0.0
     assert m.share(UNSTABLE, TH < 0.2) > 0.95

@@ -261,7 +261,7 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
         plotting.plot_trajectory(traj, fig, theta0=theta0,
                                  title=f"{kind} steady circle, rough ground, h = {h:.4g}")
         _save(fig, out / f"motion_{kind}.png", dpi, files)
-        gif = animate(traj, out / f"motion_{kind}.gif", n_frames=12 if quick else 60,
+        gif = animate(traj, out / f"motion_{kind}.gif", n_frames=6 if quick else 60,
                       fps=12, dpi=55 if quick else 70,
                       title=f"{kind} circle, h = {h:.4g}")
         files.append(gif)

@@ -147,14 +147,26 @@ def existence_codes(h: float, theta0, r_C) -> np.ndarray:
     return codes
 
 
-def _default_r_C_range(h: float) -> tuple[float, float]:
-    R = max(1.0, 0.5 * h)
+def _default_r_C_range(h: float, scale: str) -> tuple[float, float]:
+    R = max(1.0, 0.5 * h) if scale == "linear" else 20.0
     return -R, R
 
 
+def _r_C_grid(lo: float, hi: float, n: int, scale: str, linthresh: float) -> np.ndarray:
+    """``n`` values of ``r_C`` in ``[lo, hi]``, uniform on the axis's scale."""
+    if scale == "linear":
+        return np.linspace(lo, hi, n)
+    from matplotlib.scale import SymmetricalLogTransform
+
+    fwd = SymmetricalLogTransform(10.0, linthresh, 1.0)
+    u = np.linspace(*fwd.transform(np.array([lo, hi])), n)
+    return fwd.inverted().transform(u)
+
+
 def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200),
-                       r_C_range: tuple[float, float] | None = None, legend: bool = True,
-                       title: str | None = None) -> MapPlot:
+                       r_C_range: tuple[float, float] | None = None,
+                       r_C_scale: str = "symlog", linthresh: float = 0.5,
+                       legend: bool = True, title: str | None = None) -> MapPlot:
     """Existence and stability of steady circles in the ``(theta0, r_C)`` plane (Figure 4).
 
     Rough ground: dark where no steady motion exists (``Omega0^2 <= 0``, eq. 31), gray
@@ -175,16 +187,24 @@ def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200)
     n : (int, int)
         Grid size along ``theta0`` and ``r_C``.
     r_C_range : (float, float), optional
-        Range of ``r_C``; by default ``+-max(1, h/2)``.
+        Range of ``r_C``; by default ``+-20`` on the symlog scale, ``+-max(1, h/2)`` on the
+        linear one.
+    r_C_scale : {"symlog", "linear"}
+        ``"symlog"`` (default) is linear for ``|r_C| < linthresh`` and logarithmic beyond,
+        so that both the small radii near ``r_C*`` and the narrowing of the unstable bands
+        at large radii (section 4.1, text after eq. 47) are visible; the grid is uniform on
+        the chosen scale.
     """
     from .steady import r_C_star
 
     h = check_real("h", h, low=0.0)
     check_ground(ground)
     ax = _axes(ax)
-    lo, hi = r_C_range or _default_r_C_range(h)
+    if r_C_scale not in ("symlog", "linear"):
+        raise ValueError(f"r_C_scale must be 'symlog' or 'linear', got {r_C_scale!r}")
+    lo, hi = r_C_range or _default_r_C_range(h, r_C_scale)
     th = _theta_grid(n[0])
-    rc = np.linspace(lo, hi, n[1])
+    rc = _r_C_grid(lo, hi, n[1], r_C_scale, linthresh)
     TH, RC = np.meshgrid(th, rc)
     cmap, norm = _class_cmap()
     artists = {}
@@ -207,10 +227,19 @@ def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200)
     if h > 0:
         artists["se"] = ax.axvline(math.atan(h), color="tab:blue", ls="--", lw=1.0,
                                    label=r"SE: $\tan\theta_0=h$")
+    if r_C_scale == "symlog":
+        from matplotlib.ticker import FuncFormatter
+
+        ax.set_yscale("symlog", linthresh=linthresh)
+        ticks = [t for t in (-100, -10, -1, -linthresh, 0, linthresh, 1, 10, 100)
+                 if lo <= t <= hi]
+        ax.set_yticks(ticks)
+        ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
     ax.set_xlim(0.0, 0.5 * math.pi)
     ax.set_ylim(lo, hi)
     ax.set_xlabel(LABELS["theta0"])
-    ax.set_ylabel(LABELS["r_C"])
+    ax.set_ylabel(LABELS["r_C"] + (f" (linear for $|r_C|<{linthresh:g}$)"
+                                   if r_C_scale == "symlog" else ""))
     ax.set_title(title if title is not None else f"{ground} ground, $h = {h:.4g}$")
     if legend:
         labels = {} if ground == "rough" else {NO_MOTION: "no steady motion (C is at rest)"}
@@ -379,7 +408,7 @@ def plot_varpi2_surface(ground: str, ax=None, *, n=(80, 80),
         if np.isfinite(Z).any():
             artists[name] = ax.plot_surface(TH, H, np.ma.masked_invalid(Z), color=color,
                                             alpha=0.75, linewidth=0, antialiased=False,
-                                            rcount=min(60, n[1]), ccount=min(60, n[0]))
+                                            rcount=n[1], ccount=n[0])
     ax.set_xlabel(LABELS["theta0"])
     ax.set_ylabel(LABELS["h"])
     ax.set_zlabel(LABELS["omega30"])
