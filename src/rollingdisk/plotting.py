@@ -352,6 +352,21 @@ def plot_all_omega30_stable(ground: str, ax=None, *, n=(240, 200),
     return MapPlot(ax, deg, hh, ok, artists)
 
 
+def _numerator_quadratic(ground, h, theta0):
+    """Coefficients ``(a, b, c)`` of ``varpi^2 omega30^2 = a x^2 + b x + c``, ``x = omega30^2``
+    (up to the positive factor of the denominator), from the library's ``varpi2_circle``."""
+    from .stability import varpi2_circle
+
+    with np.errstate(all="ignore"):
+        f = [x * np.asarray(varpi2_circle(ground, h, theta0, math.sqrt(x)), float)
+             for x in (1.0, 2.0, 3.0)]
+        # the parabola through x = 1, 2, 3
+        a = 0.5 * (f[2] - 2.0 * f[1] + f[0])
+        b = f[1] - f[0] - 3.0 * a
+        c = f[0] - a - b
+    return a, b, c
+
+
 def varpi2_zero_surface(ground: str, h, theta0):
     """The roots ``omega30 > 0`` of ``varpi^2 = 0`` (eqs. 45 / 55) at each ``(h, theta0)``.
 
@@ -365,23 +380,32 @@ def varpi2_zero_surface(ground: str, h, theta0):
     (lower, upper) : ndarrays
         ``omega30`` of the lower and upper sheet, NaN where there is no positive root.
     """
-    from .stability import varpi2_circle
-
     check_ground(ground)
     h, theta0 = np.broadcast_arrays(np.asarray(h, float), np.asarray(theta0, float))
+    a, b, c = _numerator_quadratic(ground, h, theta0)
     with np.errstate(all="ignore"):
-        f = [x * np.asarray(varpi2_circle(ground, h, theta0, math.sqrt(x)), float)
-             for x in (1.0, 2.0, 3.0)]
-        # f(x) = a x^2 + b x + c through x = 1, 2, 3
-        a = 0.5 * (f[2] - 2.0 * f[1] + f[0])
-        b = f[1] - f[0] - 3.0 * a
-        c = f[0] - a - b
         disc = b * b - 4.0 * a * c
         sq = np.sqrt(np.where(disc >= 0, disc, np.nan))
         r1 = (-b - np.sign(a) * sq) / (2.0 * a)
         r2 = (-b + np.sign(a) * sq) / (2.0 * a)
         lo = np.sqrt(np.where(r1 > 0, r1, np.nan))
         hi = np.sqrt(np.where(r2 > 0, r2, np.nan))
+    return lo, hi
+
+
+def _close_fold(ground, H, TH, lo, hi):
+    """Grid cells next to the fold of the surface (where the two sheets meet, ``Delta = 0``)
+    get the double root, so that the drawn sheets meet instead of leaving a ragged gap.
+    This moves the drawn fold by at most one grid cell."""
+    from scipy.ndimage import binary_dilation
+
+    a, b, _ = _numerator_quadratic(ground, H, TH)
+    valid = np.isfinite(lo) & np.isfinite(hi)
+    with np.errstate(all="ignore"):
+        double = -b / (2.0 * a)
+    edge = binary_dilation(valid) & ~valid & np.isfinite(double) & (double > 0)
+    lo, hi = lo.copy(), hi.copy()
+    lo[edge] = hi[edge] = np.sqrt(double[edge])
     return lo, hi
 
 
@@ -402,7 +426,7 @@ def plot_varpi2_surface(ground: str, ax=None, *, n=(80, 80),
     th = np.linspace(theta0_range[0], theta0_range[1], n[0] + 2)[1:-1]
     hh = np.linspace(h_range[0], h_range[1], n[1])
     TH, H = np.meshgrid(th, hh)
-    lo, hi = varpi2_zero_surface(ground, H, TH)
+    lo, hi = _close_fold(ground, H, TH, *varpi2_zero_surface(ground, H, TH))
     artists = {}
     for name, Z, color in (("lower", lo, "tab:orange"), ("upper", hi, "tab:blue")):
         if np.isfinite(Z).any():
