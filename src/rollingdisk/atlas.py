@@ -97,24 +97,36 @@ class _Progress:
 # ------------------------------------------------------------------------------ motions
 def steady_trajectory(h: float, ground: str, theta0: float, *, Omega0: float | None = None,
                       r_C: float | None = None, r_P: float | None = None,
-                      perturb: float = 0.0, t_end: float = 20.0, n_out: int = 1200):
-    """Build the steady motion of eqs. (26)-(35) and simulate it from a tilt perturbation.
+                      perturb: float = 0.0, kick: float = 0.0, t_end: float = 20.0,
+                      n_out: int = 1200):
+    """Build the steady motion of eqs. (26)-(35) and simulate it from a small disturbance.
 
-    Returns ``(motion, stability, trajectory)``.  ``perturb`` is added to ``theta(0)``;
-    the trajectory is sampled at ``n_out`` equally spaced times in ``[0, t_end]``.
+    ``perturb`` is added to ``theta(0)``, ``kick`` to ``omega1(0) = d theta/dt``.  A tilt
+    alone moves the disk onto a neighbouring steady motion, about which it then oscillates
+    (eq. 39 has a constant right-hand side then); a kick ``omega1`` keeps the oscillation
+    centred on ``theta0`` (linear theory: ``omega~2 - c theta~`` is conserved, eq. 39).
+    The trajectory is sampled at ``n_out`` equally spaced times in ``[0, t_end]``.
+
+    Returns ``(motion, stability, trajectory)``.
     """
-    from .simulate import simulate_steady
+    from .equations import state_index
+    from .simulate import simulate
     from .stability import stability
     from .steady import steady_motion
 
     h = check_real("h", h, low=0.0)
     check_ground(ground)
     t_end = check_real("t_end", t_end, low=0.0, low_open=True)
+    perturb = check_real("perturb", perturb)
+    kick = check_real("kick", kick)
     disk = Disk(h)
     motion = steady_motion(disk, ground, theta0, Omega0=Omega0, r_C=r_C, r_P=r_P)
     stab = stability(motion)
-    traj = simulate_steady(motion, t_end, perturb=perturb,
-                           t_eval=np.linspace(0.0, t_end, max(2, int(n_out))))
+    y0 = np.array(motion.initial_state(), dtype=float)
+    y0[state_index(ground, "theta")] += perturb
+    y0[state_index(ground, "omega1")] += kick
+    traj = simulate(disk, ground, y0, (0.0, t_end),
+                    t_eval=np.linspace(0.0, t_end, max(2, int(n_out))))
     return motion, stab, traj
 
 
@@ -253,9 +265,9 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
         pr.step(f"{kind} steady circle: simulate, plot, animate")
         theta0, Omega0 = chosen[kind]
         t_end = 12.0 if quick else 30.0
-        perturb = 0.02 if kind == "stable" else 1e-3
+        kick = 0.05 if kind == "stable" else 1e-4
         motion, stab, traj = steady_trajectory(h, "rough", theta0, Omega0=Omega0,
-                                               perturb=perturb, t_end=t_end,
+                                               kick=kick, t_end=t_end,
                                                n_out=300 if quick else 1500)
         fig = Figure(figsize=(9.0, 6.5))
         plotting.plot_trajectory(traj, fig, theta0=theta0,
@@ -265,7 +277,7 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
                       fps=12, dpi=55 if quick else 70,
                       title=f"{kind} circle, h = {h:.4g}")
         files.append(gif)
-        motions[kind] = _motion_record(motion, stab, traj, perturb)
+        motions[kind] = _motion_record(motion, stab, traj, kick)
         pr.done(f"status {motions[kind]['status']}")
 
     # 7. index page ------------------------------------------------------------------------
@@ -284,19 +296,27 @@ def _floats(d):
     return float(d)
 
 
-def _motion_record(motion, stab, traj, perturb) -> dict:
+def _motion_record(motion, stab, traj, kick) -> dict:
     from .plotting import trajectory_series
+    from .simulate import growth_rate, oscillation_frequency
 
     theta = trajectory_series(traj, "theta")
     E = trajectory_series(traj, "E")
+    measured = None
+    if stab.stable:
+        measured = oscillation_frequency(traj)
+    else:
+        measured = growth_rate(traj, theta_ref=motion.theta0, max_amplitude=1e-3)
     rec = {
         "theta0": float(motion.theta0), "Omega0": float(motion.Omega0),
         "omega20": float(motion.omega20), "omega30": float(motion.omega30),
         "r_C": float(motion.r_C), "r_P": float(motion.r_P),
         "varpi2": float(stab.varpi2), "stable": bool(stab.stable),
+        "varpi": float(stab.varpi) if stab.stable else None,
         "period": None if stab.period is None else float(stab.period),
         "growth_rate": None if stab.growth_rate is None else float(stab.growth_rate),
-        "perturb": float(perturb), "status": str(getattr(traj, "status", "completed")),
+        "measured": None if measured is None else float(measured),
+        "kick": float(kick), "status": str(getattr(traj, "status", "completed")),
         "t_end": float(np.asarray(traj.t)[-1]),
         "max_theta_dev": float(np.max(np.abs(theta - motion.theta0))),
         "energy_drift": float(np.max(np.abs(E - E[0]))),
@@ -339,10 +359,12 @@ def _index_html(h: float, thr: dict, motions: dict, names: list) -> str:
 
     def motion_block(kind):
         m = motions[kind]
-        verdict = (f"stable: &varpi;&sup2; = {_fmt(m['varpi2'])}, period "
-                   f"{_fmt(m['period'])}" if m["stable"] else
+        verdict = (f"stable: &varpi;&sup2; = {_fmt(m['varpi2'])}, &varpi; = "
+                   f"{_fmt(m['varpi'])} (period {_fmt(m['period'])}); the simulation "
+                   f"oscillates at {_fmt(m['measured'])}" if m["stable"] else
                    f"unstable: &varpi;&sup2; = {_fmt(m['varpi2'])}, growth rate "
-                   f"{_fmt(m['growth_rate'])}")
+                   f"&radic;(&minus;&varpi;&sup2;) = {_fmt(m['growth_rate'])}; the simulation "
+                   f"grows at {_fmt(m['measured'])}")
         return f"""
 <h3>{kind.capitalize()} steady circle</h3>
 <table><tr><th>&theta;<sub>0</sub> [rad]</th><th>&Omega;<sub>0</sub></th>
@@ -350,8 +372,9 @@ def _index_html(h: float, thr: dict, motions: dict, names: list) -> str:
 <th>r<sub>P</sub></th></tr>
 <tr><td>{_fmt(m['theta0'])}</td><td>{_fmt(m['Omega0'])}</td><td>{_fmt(m['omega20'])}</td>
 <td>{_fmt(m['omega30'])}</td><td>{_fmt(m['r_C'])}</td><td>{_fmt(m['r_P'])}</td></tr></table>
-<p>Closed form (section 4.1): {verdict}. Simulated from &theta;(0) = &theta;<sub>0</sub> +
-{_fmt(m['perturb'], 2)} until t = {_fmt(m['t_end'])} (status <code>{e(m['status'])}</code>):
+<p>Closed form (section 4.1): {verdict}. Simulated from the steady state with a kick
+d&theta;/dt(0) = {_fmt(m['kick'], 2)} until t = {_fmt(m['t_end'])} (status
+<code>{e(m['status'])}</code>):
 largest |&theta; &minus; &theta;<sub>0</sub>| = {_fmt(m['max_theta_dev'], 3)}, largest energy
 error {_fmt(m['energy_drift'], 2)} mga.</p>
 <div class="pair"><img src="motion_{kind}.png" alt="{kind} motion plots" width="620">
@@ -400,7 +423,7 @@ marks this disk.</p>
 <img src="all_omega30.png" alt="regions stable for every omega30">
 
 <h2>Two steady circles, simulated</h2>
-<p>Each motion starts on the steady circle with the tilt perturbed a little, and is integrated
+<p>Each motion starts on the steady circle with a small kick d&theta;/dt, and is integrated
 with the full nonlinear equations (rough ground: eqs. (1), (2), (37), (38)). The plots show
 the paths of C and of the contact point P, &theta;(t), the energy error and the contact force
 (F<sub>z</sub> &gt; 0 keeps contact). The animation draws the disk as a cylinder of thickness

@@ -110,7 +110,8 @@ def _add_figures(sub) -> None:
     g.add_argument("--Omega0", type=float, help="spin rate about the vertical")
     g.add_argument("--r-C", dest="r_C", type=float, help="signed radius of C's circle")
     g.add_argument("--r-P", dest="r_P", type=float, help="signed radius of P's circle")
-    p.add_argument("--perturb", type=float, default=0.01, help="added to theta(0)")
+    p.add_argument("--perturb", type=float, default=0.0, help="added to theta(0)")
+    p.add_argument("--kick", type=float, default=0.01, help="added to omega1(0) = dtheta/dt")
     p.add_argument("--t-end", type=float, default=20.0, help="simulated time")
     p.add_argument("--frames", type=int, default=60)
     p.add_argument("--fps", type=int, default=15)
@@ -171,7 +172,7 @@ def _run_animate(args) -> int:
     writer_for(args.out, args.fps)  # a bad file name fails before the simulation
     motion, stab, traj = steady_trajectory(
         args.h, args.ground, args.theta0, Omega0=args.Omega0, r_C=args.r_C, r_P=args.r_P,
-        perturb=args.perturb, t_end=args.t_end)
+        perturb=args.perturb, kick=args.kick, t_end=args.t_end)
     verdict = (f"stable, varpi^2 = {stab.varpi2:.4g}" if stab.stable
                else f"unstable, varpi^2 = {stab.varpi2:.4g}")
     print(f"{args.ground} ground, h = {args.h:g}, theta0 = {motion.theta0:.4g}, "
