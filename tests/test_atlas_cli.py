@@ -5,6 +5,7 @@ resources); the chosen "stable" motion stays near its steady tilt and the "unsta
 departs from it, as the closed form says; the CLI contract (exit 2, one line).
 """
 
+import io
 import json
 import re
 import time
@@ -26,9 +27,9 @@ def _referenced(index_html: str):
 @pytest.fixture(scope="module")
 def quick_atlas(tmp_path_factory):
     out = tmp_path_factory.mktemp("atlas")
-    t0 = time.perf_counter()
-    result = build_atlas(0.17, out, quick=True, progress=False)
-    return result, time.perf_counter() - t0
+    stream = io.StringIO()
+    result = build_atlas(0.17, out, quick=True, progress=True, stream=stream)
+    return result, stream.getvalue()
 
 
 def test_atlas_index_references_only_existing_files(quick_atlas):
@@ -61,11 +62,27 @@ def test_atlas_thresholds_and_motions(quick_atlas):
     assert st["energy_drift"] < 1e-6 and un["energy_drift"] < 1e-6
 
 
-def test_atlas_progress_on_stderr(tmp_path, capsys):
-    assert main(["atlas", "--h", "0.3", "--out", str(tmp_path), "--quick"]) == 0
-    captured = capsys.readouterr()
-    assert "[1/7]" in captured.err and "[7/7]" in captured.err
-    assert captured.out.strip().endswith("index.html")
+def test_atlas_progress_lines(quick_atlas):
+    _, progress = quick_atlas
+    lines = progress.strip().splitlines()
+    assert lines[0].startswith("[1/7]") and lines[-2].startswith("[7/7]")
+    assert lines[-1].startswith("atlas written to")
+
+
+def test_cli_atlas_is_a_thin_wrapper(tmp_path, monkeypatch, capsys):
+    import rollingdisk.atlas as atlas
+
+    calls = []
+
+    def fake(h, out_dir, *, quick, progress):
+        calls.append((h, out_dir, quick, progress))
+        return atlas.AtlasResult(tmp_path, tmp_path / "index.html", (), h)
+
+    monkeypatch.setattr(atlas, "build_atlas", fake)
+    assert main(["atlas", "--out", str(tmp_path), "--quick"]) == 0
+    assert main(["atlas", "--h", "0.3", "--out", str(tmp_path), "--quiet"]) == 0
+    assert calls == [(0.17, str(tmp_path), True, True), (0.3, str(tmp_path), False, False)]
+    assert capsys.readouterr().out.strip().endswith("index.html")
 
 
 @pytest.mark.parametrize("h", [0.0, 0.17, 0.9, 3.0])
