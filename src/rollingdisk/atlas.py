@@ -387,10 +387,11 @@ error {_fmt(m['energy_drift'], 2)} mga.</p>
 <p>A homogeneous disk of radius a and thickness 2h&nbsp;=&nbsp;{2 * h:.4g}&nbsp;a on a horizontal
 plane, after M. Batista, <i>Steady Motion of a Rigid Disk of Finite Thickness on a Horizontal
 Plane</i>. Units: m = a = g = 1 (time in &radic;(a/g)). &theta;<sub>0</sub> is the tilt from the
-vertical, &omega;<sub>30</sub> = &Omega;<sub>0</sub> cos&theta;<sub>0</sub> the spin about the
-vertical seen in the frame C&xi;&eta;&zeta;, r<sub>C</sub> the signed radius of the circle of the
-centre C (positive: the disk leans toward the centre A of the circle). The static equilibrium
-(SE) tilt is tan&theta;<sub>0</sub> = h, &theta;<sub>0</sub> = {math.atan(h):.4g} rad.
+vertical, &Omega;<sub>0</sub> the rate at which the disk turns about the vertical,
+&omega;<sub>30</sub> = &Omega;<sub>0</sub> cos&theta;<sub>0</sub> (eq. 3), r<sub>C</sub> the
+signed radius of the circle of the centre C (positive: the disk leans toward the centre A of
+the circle). The static equilibrium (SE) tilt is tan&theta;<sub>0</sub> = h,
+&theta;<sub>0</sub> = {math.atan(h):.4g} rad.
 All numbers come from the library (formulas derived and checked; see <code>docs/errata.md</code>
 for where they differ from the printed paper).</p>
 
@@ -412,8 +413,10 @@ every &Omega;<sub>0</sub>.</p>
 <h2>Stability of steady circles</h2>
 <p>For every &theta;<sub>0</sub> and every &omega;<sub>30</sub> &ne; 0 a steady circle exists
 on either ground (&omega;<sub>20</sub> from eq. (44) or (54)). Gray: &varpi;&sup2; &lt; 0
-(unstable), white: stable. The dotted line is the paper's uniform bound above which every
-steady circle is stable (&omega;<sub>30</sub>&sup2; = 1 rough, 2 smooth).</p>
+(unstable), white: stable. The dotted line is the uniform bound above which every steady
+circle is stable whatever h and &theta;<sub>0</sub>: &omega;<sub>30</sub>&sup2; = 1 on rough
+ground, &omega;<sub>30</sub>&sup2; = 4 on smooth ground (the paper's conclusion prints 2, but
+its own eq. (57) at h = 0 needs 4; see <code>docs/figures.md</code>).</p>
 <img src="stability.png" alt="stability maps">
 
 <h2>Stable for every &omega;<sub>30</sub></h2>
