@@ -37,7 +37,8 @@ def residual_scale(m: SteadyMotion) -> float:
     ht = m.h_tilde
     p = math.tan(t)
     if m.ground == "rough":
-        terms = (abs(6 * (3 + 2 * ht * p) * w2 * w3), abs(((3 + 16 * h * h) * p + 12 * ht) * w3 ** 2),
+        terms = (abs(6 * (3 + 2 * ht * p) * w2 * w3),
+                 abs(((3 + 16 * h * h) * p + 12 * ht) * w3 ** 2),
                  12 * abs(math.sin(t)) + 12 * h)
     else:
         k1 = 0.25 + h * h / 3
