@@ -63,12 +63,120 @@ def _run_derive(args) -> int:
 
 # ---------------------------------------------------------------------------- steady
 def _add_steady(sub) -> None:
-    """Registered by the steady-motion issue."""
+    """``rollingdisk steady``: one steady motion and its stability (sections 3, 4)."""
+    p = sub.add_parser(
+        "steady", help="a steady motion (straight line, circle, spin) and its stability",
+        description="Steady motion of the disk (paper sections 3-4): give --theta0 and one of "
+        "--Omega0, --rC, --rP for a circle, or --motion straight --omega0 W. Angles in "
+        "radians or with a deg suffix; write negative angles as --theta0=-30deg.")
+    p.add_argument("--ground", choices=("rough", "smooth"), default="rough",
+                   help="rough (no slip, default) or smooth (no friction)")
+    p.add_argument("--h", type=float, required=True, help="half-thickness / radius, h >= 0")
+    p.add_argument("--theta0", type=parse_angle, help="inclination (radians, or e.g. 30deg)")
+    p.add_argument("--motion", choices=("circle", "straight"), default=None,
+                   help="circle (with spin in place) or straight; default from the options")
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("--Omega0", type=float, help="spin rate d psi/dt of a circle")
+    g.add_argument("--rC", type=float, help="signed radius of the circle of the centre C")
+    g.add_argument("--rP", type=float, help="signed radius of the circle of the contact point")
+    g.add_argument("--omega0", type=float, help="rolling rate of a straight line")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(handler=_run_steady)
+
+
+def _steady_record(motion, stab) -> dict:
+    rec = motion.as_dict()
+    rec["theta0_deg"] = math.degrees(motion.theta0)
+    rec.update(varpi2=stab.varpi2, stable=bool(stab.stable),
+               varpi=None if not stab.stable else stab.varpi, period=stab.period,
+               growth_rate=stab.growth_rate)
+    return rec
+
+
+def _run_steady(args) -> int:
+    from .disk import Disk
+    from .stability import stability
+    from .steady import steady_motion, straight_line
+
+    disk = Disk(h=args.h)
+    straight = args.motion == "straight" or (args.motion is None and args.omega0 is not None)
+    if straight:
+        if args.omega0 is None:
+            raise CLIError("rollingdisk steady: --motion straight needs --omega0")
+        motion = straight_line(disk, args.ground, args.omega0)
+        if args.theta0 is not None and abs(abs(args.theta0) - motion.theta0) > 1e-9:
+            raise CLIError(
+                f"rollingdisk steady: a straight line is steady only at theta0 = arctan(h) = "
+                f"{motion.theta0:.6g} rad ({math.degrees(motion.theta0):.4g}deg), "
+                f"not {args.theta0:.6g}")
+        if args.theta0 is not None and args.theta0 < 0:
+            motion = straight_line(disk, args.ground, args.omega0, lean=-1)
+    else:
+        if args.omega0 is not None:
+            raise CLIError("rollingdisk steady: --omega0 is for --motion straight; "
+                           "circles take --Omega0, --rC or --rP")
+        if args.theta0 is None:
+            raise CLIError("rollingdisk steady: give --theta0 (e.g. 30deg) for a circle")
+        if args.Omega0 is None and args.rC is None and args.rP is None:
+            raise CLIError("rollingdisk steady: give one of --Omega0, --rC, --rP "
+                           "(or --motion straight --omega0 W)")
+        motion = steady_motion(disk, args.ground, args.theta0, Omega0=args.Omega0,
+                               r_C=args.rC, r_P=args.rP)
+    rec = _steady_record(motion, stability(motion))
+    if args.json:
+        import json
+
+        print(json.dumps(rec))
+        return 0
+    labels = [
+        ("ground", "ground"), ("h", "half-thickness / radius"), ("motion", "kind of motion"),
+        ("theta0", "inclination [rad]"), ("theta0_deg", "inclination [deg]"),
+        ("Omega0", "spin rate d psi/dt"), ("omega0", "rolling rate d phi/dt"),
+        ("omega20", "angular velocity, omega2"), ("omega30", "angular velocity, omega3"),
+        ("r_C", "radius of the circle of C"), ("r_P", "radius of the circle of P"),
+        ("v_C", "speed of C"),
+        ("F_y", "friction F_y = -r_C Omega0^2, points to the centre (eq. 27)"),
+        ("varpi2", "varpi^2 of small oscillations"), ("stable", "stable (varpi^2 > 0)"),
+        ("period", "period 2 pi / varpi"), ("growth_rate", "growth rate sqrt(-varpi^2)"),
+    ]
+    for key, text in labels:
+        v = rec[key]
+        if v is None:
+            continue
+        val = f"{v:.10g}" if isinstance(v, float) else str(v)
+        print(f"{key:<12} {val:>18}   {text}")
+    print("(dimensionless: m = a = g = 1, time unit sqrt(a/g))")
+    return 0
 
 
 # ---------------------------------------------------------------------------- thresholds
 def _add_thresholds(sub) -> None:
-    """Registered by the steady-motion issue."""
+    """``rollingdisk thresholds``: critical speeds of eqs. (42), (43), (53), (57)."""
+    p = sub.add_parser("thresholds", help="critical squared speeds for a disk (eqs. 42, 43, "
+                       "53, 57)")
+    p.add_argument("--h", type=float, required=True, help="half-thickness / radius, h >= 0")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(handler=_run_thresholds)
+
+
+def _run_thresholds(args) -> int:
+    from .stability import thresholds
+
+    d = thresholds(args.h).as_dict()
+    if args.json:
+        import json
+
+        print(json.dumps(d))
+        return 0
+    eqs = {("rough", "straight_line_omega20_sq"): "(42)",
+           ("rough", "se_circle_omega30_sq"): "(43)",
+           ("smooth", "straight_line_omega20_sq"): "(53)",
+           ("smooth", "spin_omega30_sq"): "(57)"}
+    print(f"stability thresholds for h = {args.h:g} (stable above):")
+    for ground, rows in d.items():
+        for key, v in rows.items():
+            print(f"  {ground:<7} {key:<26} {v:.10g}   eq. {eqs[(ground, key)]}")
+    return 0
 
 
 # ---------------------------------------------------------------------------- simulate

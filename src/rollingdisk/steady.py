@@ -76,8 +76,9 @@ class SteadyMotion:
         (eqs. 24, 26); ``r_C`` with the sign of ``theta0`` means leaning towards A.
         ``nan`` for straight lines.
     F_y : float
-        Friction force towards the centre, ``-r_C Omega0^2`` (eq. 27); 0 on smooth ground
-        and on straight lines.  ``F_x = 0`` and ``F_z = 1`` always (eq. 19).
+        Friction force, its component along the y axis of Cxyz: ``F_y = -r_C Omega0^2``
+        (eq. 27), which points from C to the centre A; 0 on smooth ground and on straight
+        lines.  ``F_x = 0`` and ``F_z = 1`` always (eq. 19).
     v_C : float
         Speed of the centre C.
     v_Cx0, v_Cy0 : float
@@ -101,6 +102,11 @@ class SteadyMotion:
     v_Cx0: float = 0.0
     v_Cy0: float = 0.0
     y_P0: float = 0.0
+
+    @property
+    def F_centre(self) -> float:
+        """Magnitude of the friction force, directed from C to the centre A: ``|r_C| Omega0^2``."""
+        return abs(self.F_y)
 
     @property
     def disk(self) -> Disk:
