@@ -179,7 +179,7 @@ def test_conclusion_smooth_omega30_sq_above_2_is_wrong():
     """Conclusion, smooth ground: the paper says omega30^2 > 2 suffices.  It does not.
 
     The varpi^2 = 0 surface reaches omega30^2 = 4 at h = 0, theta0 -> 0 (the paper's own
-    (57) at h = 0), and exceeds 2 for h up to about 0.9; correct: omega30^2 > 4 suffices.
+    (57) at h = 0), and exceeds 2 for every h < 0.948; correct: omega30^2 > 4 suffices.
     Counterexample confirmed by simulation: h = 0.1, theta0 = 3 deg, omega30^2 = 3.
     """
     sup = sup_critical_omega30_sq("smooth")
