@@ -32,7 +32,7 @@ from rollingdisk.stability import (
 from rollingdisk.steady import r_C_star, steady_motion, straight_line
 
 H = st.floats(0.0, 5.0)
-THETA = st.floats(0.01, 1.5)
+THETA = st.floats(1e-4, 1.569)  # (0, pi/2); tan(1.569) ~ 560
 SIGN = st.sampled_from([1.0, -1.0])
 
 
@@ -205,3 +205,20 @@ def test_unstable_motion_grows_at_sqrt_minus_varpi2(ground, h, theta0, W):
     sel = (d > 1e-7) & (d < 5e-5)
     slope = np.polyfit(t[sel], np.log(d[sel]), 1)[0]
     assert slope == pytest.approx(lam, rel=2e-2)
+
+
+@pytest.mark.parametrize("theta0", [0.002, 1e-3, -0.002, 1e-7])
+def test_linearization_near_theta_zero(theta0):
+    """The theta stencil crosses theta = 0 here; h~ must keep the value of theta0's side."""
+    m = steady_motion(Disk(h=1.0), "rough", theta0, Omega0=1.0)
+    assert agree(varpi2_linearized(m), stability(m).varpi2, jac_scale(m))
+
+
+def test_core_imports_without_sympy_or_matplotlib():
+    import subprocess
+    import sys
+
+    code = ("import sys; sys.modules['sympy'] = None; sys.modules['matplotlib'] = None; "
+            "import rollingdisk.steady, rollingdisk.stability")
+    subprocess.run([sys.executable, "-c", code], check=True,
+                   env={"PYTHONPATH": str(__import__("pathlib").Path(__file__).parents[1] / "src")})

@@ -149,7 +149,8 @@ def reduced_jacobian(ground: str, h: float, theta0: float, omega20: float,
     difference with two Richardson extrapolations (error ``O(delta^6)``, about 1e-12
     relative here): the complex step cannot be used for ``theta`` because the kernels
     contain ``h~ = h sgn(theta)`` and numpy's ``sign`` of a complex number is ``z/|z|``,
-    which would add a spurious derivative.
+    which would add a spurious derivative.  Stencil points on the other side of
+    ``theta = 0`` are evaluated with ``-h`` so that ``h~`` keeps its value at ``theta0``.
     """
     ground = check_ground(ground)
     x0 = np.array([theta0, 0.0, omega20, omega30], dtype=float)
@@ -159,14 +160,21 @@ def reduced_jacobian(ground: str, h: float, theta0: float, omega20: float,
         xc = x0.astype(complex)
         xc[j] += 1j * eps
         J[:, j] = _reduced_rhs(ground, h, xc).imag / eps
-    # theta column: stay on one side of theta = 0 and away from pi/2
-    d = 2e-3 * min(1.0, abs(theta0) if theta0 != 0 else 1.0, math.cos(theta0) * 2.0)
+    # theta column: stay away from pi/2.  Near theta = 0 the stencil may cross zero, where
+    # h~ = h sgn(theta) jumps; evaluating there with -h (h enters only as h~ and h^2)
+    # continues the branch of theta0 analytically across zero.
+    d = 2e-3 * min(1.0, math.cos(theta0) * 2.0)
+    while any(theta0 + sgn * d / k == 0.0 for k in (1, 2, 4) for sgn in (1, -1)):
+        d *= 0.9  # never evaluate at theta = 0 itself, where h~ = 0
+    side = 1.0 if theta0 >= 0 else -1.0
+
+    def g(theta):
+        x = x0.copy()
+        x[0] = theta
+        return _reduced_rhs(ground, h if theta * side > 0 else -h, x)
 
     def central(delta):
-        xp, xm = x0.copy(), x0.copy()
-        xp[0] += delta
-        xm[0] -= delta
-        return (_reduced_rhs(ground, h, xp) - _reduced_rhs(ground, h, xm)) / (2.0 * delta)
+        return (g(theta0 + delta) - g(theta0 - delta)) / (2.0 * delta)
 
     D1, D2, D3 = central(d), central(d / 2), central(d / 4)
     R1 = (4.0 * D2 - D1) / 3.0
