@@ -551,9 +551,9 @@ conclusion (omega30^2 > 2 must read omega30^2 > 4).  The library uses the correc
 """
 
 
-def errata_markdown() -> str:
-    """The content of docs/errata-sections-3-4.md."""
-    return HEADER + "\n" + format_rows(checks_sections_3_4()) + "\n"
+def errata_markdown(rows: list[dict] | None = None) -> str:
+    """The content of docs/errata-sections-3-4.md (from ``rows`` or a fresh check)."""
+    return HEADER + "\n" + format_rows(rows or checks_sections_3_4()) + "\n"
 
 
 if __name__ == "__main__":  # pragma: no cover
