@@ -1,8 +1,8 @@
 """Sections 3-4 re-derived with sympy: steady motions, small oscillations, the paper's numbers.
 
-Everything starts from the reduced equations of motion, eq. (38) (rough) and eq. (49)
-(smooth), which the lead's Newton-Euler derivation confirms (they are the kernels of
-:mod:`rollingdisk.equations`, typed here symbolically).  From them this module derives
+Everything starts from the reduced equations of motion obtained by the Newton-Euler
+derivation of :mod:`rollingdisk.symbolic.derivation` (independent of the paper; the printed
+eqs. (38) and (49) are compared with it here too).  From them this module derives
 
 * the steady-motion condition: ``d omega1/dt = 0`` at ``omega1 = 0``;
 * ``varpi^2``: the linearization of the reduced system ``(theta, omega1, omega2, omega3)`` at
@@ -42,9 +42,20 @@ yP = s - ht * c  # eq. (16)
 zP = -(c + ht * s)
 
 
-def _reduced(ground: str):
-    """(d1, d2, d3) of eq. (38) / (49) as functions of (theta, omega1, omega2, omega3)."""
+def _reduced(ground: str, source: str = "derivation"):
+    """(d1, d2, d3) as functions of (theta, omega1, omega2, omega3).
+
+    ``source="derivation"``: the Newton-Euler result of :mod:`rollingdisk.symbolic.derivation`
+    (independent of the paper); ``"printed"``: eq. (38) / (49) as printed.
+    """
     T = sp.Symbol("T", real=True)
+    if source == "derivation":
+        from . import derivation as D
+
+        sol = D.derive().rough_omega_dot if ground == "rough" else D.derive().smooth_omega_dot
+        m = {D.theta: T, D.ht: ht, D.h: h, D.omega1: w1, D.omega2: w2, D.omega3: w3}
+        d1, d2, d3 = (sp.sympify(e).subs(m, simultaneous=True) for e in sol)
+        return T, d1, d2, d3
     sT, cT, pT = sp.sin(T), sp.cos(T), sp.tan(T)
     y, z = sT - ht * cT, -(cT + ht * sT)
     if ground == "rough":  # eq. (38)
@@ -61,14 +72,16 @@ def _reduced(ground: str):
 
 def _at_steady(e, T):
     """Evaluate an expression in theta = T at theta0 (via p0) and omega1 = 0."""
-    e = e.subs(w1, 0)
-    e = e.subs({sp.tan(T): p, sp.sin(T): s, sp.cos(T): c})
-    return e
+    return e.subs(w1, 0).subs(T, sp.atan(p))
 
 
-def derived(ground: str) -> dict:
-    """Derived expressions: steady condition, omega20(omega30), varpi^2 and its pieces."""
-    T, d1, d2, d3 = _reduced(ground)
+def derived(ground: str, source: str = "derivation") -> dict:
+    """Derived expressions: steady condition, omega20(omega30), varpi^2 and its pieces.
+
+    Starts from the Newton-Euler derivation (``source="derivation"``) or from the printed
+    eq. (38) / (49) (``source="printed"``).
+    """
+    T, d1, d2, d3 = _reduced(ground, source)
     cond = _at_steady(d1, T)  # d omega1/dt at a steady state: must vanish
     a2 = _at_steady(sp.diff(d2, w1), T)
     a3 = _at_steady(sp.diff(d3, w1), T)
@@ -306,8 +319,10 @@ def checks_sections_3_4() -> list[dict]:
              "definitions"))
     add(_row("(37)", "v_Cx = omega2 - h~ omega3, v_Cy = -omega1 (cos th + h~ sin th)", "", True,
              True, "no-slip condition (6); confirmed by the lead's derivation (docs/errata.md)"))
-    add(_row("(38)", "reduced equations, rough ground", "", True, True,
-             "confirmed by the lead's Newton-Euler derivation (docs/errata.md)"))
+    add(_row("(38)", "reduced equations, rough ground", "",
+             _same_reduced("rough"), True,
+             "the printed (38) equals the Newton-Euler derivation (rollingdisk.symbolic."
+             "derivation) at random points; all rows below start from the derivation"))
     a2p = -(12 * ht * w2 + 2 * (3 + 4 * h ** 2) * w3) / (3 * (3 + 8 * h ** 2))
     a3p = -6 * w2 / (3 + 8 * h ** 2) + (p + 4 * ht / (3 + 8 * h ** 2)) * w3
     add(_row("(39)", "theta~'' + varpi^2 theta~ = 0; omega~2' = -(12 h~ omega20 + 2(3+4h^2) "
@@ -330,20 +345,19 @@ def checks_sections_3_4() -> list[dict]:
              "sympy: identical to the derived linearization for all omega20, omega30; "
              "numerically agrees with the Jacobian of the library's equations to ~1e-12"))
     vsl = R_["varpi2"].subs({w3: 0, p: ht})
-    thr42 = sp.solve(sp.Eq(vsl, 0), w2 ** 2) or sp.solve(
-        sp.Eq(vsl.subs(w2, sp.sqrt(sp.Symbol("X", positive=True))), 0), sp.Symbol("X"))
+    t42 = (3 + 8 * h ** 2) * sp.sqrt(1 + h ** 2) / (3 * (3 + 2 * h ** 2))
     add(_row("(42)", "omega20^2 > (3+8h^2) sqrt(1+h^2) / (3 (3+2h^2))", "",
-             same(thr42[0], (3 + 8 * h ** 2) * sp.sqrt(1 + h ** 2) / (3 * (3 + 2 * h ** 2))),
-             True, "sympy: zero of the derived varpi^2 at omega30 = 0, tan th0 = h; h = 0 "
-             "gives 1/3 (quoted, confirmed)"))
-    X = sp.Symbol("X", positive=True)
-    vse = R_["varpi2_circle"].subs(p, ht).subs(w3, sp.sqrt(X))
-    thr43 = sp.solve(sp.Eq(sp.numer(sp.together(vse)), 0), X)
+             _threshold(vsl, w2, t42), True,
+             "sympy: the derived varpi^2 at omega30 = 0, tan th0 = h vanishes at the printed "
+             "omega20^2 and is negative below / positive above it; h = 0 gives 1/3 (quoted, "
+             "confirmed)"))
+    vse = R_["varpi2_circle"].subs(p, ht)
+    t43 = 12 * sp.sqrt(1 + h ** 2) / ((1 + h ** 2) * (15 + 16 * h ** 2))
     add(_row("(43)", "omega30^2 > 12 sqrt(1+h^2) / ((1+h^2)(15+16h^2))", "",
-             bool(thr43) and same(thr43[0], 12 * sp.sqrt(1 + h ** 2)
-                                  / ((1 + h ** 2) * (15 + 16 * h ** 2))), True,
-             "sympy; an odd but correct form of 12/((15+16h^2) sqrt(1+h^2)); h = 0: 4/5 and "
-             "h = sqrt(3)/2: |omega30| > sqrt(8 sqrt7/63) = 0.5796 (quoted 0.580, confirmed)"))
+             _threshold(vse, w3, t43), True,
+             "sympy, as for (42); an odd but correct form of 12/((15+16h^2) sqrt(1+h^2)); "
+             "h = 0: 4/5 and h = sqrt(3)/2: |omega30| > sqrt(8 sqrt7/63) = 0.5796 (quoted "
+             "0.580, confirmed)"))
     p44 = (((3 + 4 * h ** 2) * p + 12 * ht) / (6 * (3 + 2 * ht * p)) * w3
            - 2 * (p - ht) / ((3 + 2 * ht * p) * sq) / w3)
     c44 = (((3 + 16 * h ** 2) * p + 12 * ht) / (6 * (3 + 2 * ht * p)) * w3
@@ -406,8 +420,9 @@ def checks_sections_3_4() -> list[dict]:
                      f"{2 * 67 / 79:.4f}"})
 
     # ---- 4.2 smooth -------------------------------------------------------------------------
-    add(_row("(49)", "reduced equations, smooth ground", "", True, True,
-             "confirmed by the lead's Newton-Euler derivation (docs/errata.md)"))
+    add(_row("(49)", "reduced equations, smooth ground", "",
+             _same_reduced("smooth"), True,
+             "the printed (49) equals the Newton-Euler derivation at random points"))
     add(_row("(50)", "omega~2' = 0, omega~3' = (-6 omega20/(3+4h^2) + tan th0 omega30) "
              "omega~1", "", same(-6 * w2 / (3 + 4 * h ** 2) + p * w3, S_["a3"]), True,
              "sympy"))
@@ -437,8 +452,10 @@ def checks_sections_3_4() -> list[dict]:
              same(e55, S_["varpi2_circle"]), True, "sympy; Q > 0 (discriminant "
              "-4(45 + 108h^2 + 64h^4) < 0), as the paper states"))
     add(_row("(57)", "omega30^2 > 12/((3+4h^2) sqrt(1+h^2))", "",
-             same(e55.subs(p, ht).subs(w3, sp.sqrt(12 / (a * sp.sqrt(1 + h ** 2)))), 0, se_pt),
-             True, "sympy: root of (55) at tan th0 = h; h = 0 gives 4 (quoted, confirmed)"))
+             _threshold(S_["varpi2_circle"].subs(p, ht), w3,
+                        12 / (a * sp.sqrt(1 + h ** 2))), True,
+             "sympy: the derived varpi^2 at tan th0 = h changes sign there; h = 0 gives 4 "
+             "(quoted, confirmed)"))
     add(_row("(58)", "P2 w^4 + P1 w^2 + P0 > 0", "", True, True, "from (55), Q > 0"))
     e59 = 3 * p ** 4 - 4 * ht * p ** 3 + 6 * p ** 2 - 12 * ht * p - 1 + 4 * h ** 2
     add(_row("(59)", "3p0^4 - 4h p0^3 + 6p0^2 - 12h~p0 - 1 + 4h^2 > 0", "",
@@ -477,6 +494,29 @@ def checks_sections_3_4() -> list[dict]:
     assert sup_s > 2.0
     del P0c, circle_coefficients
     return rows
+
+
+def _threshold(expr, var, thr) -> bool:
+    """``expr`` (no p0) vanishes at ``var = sqrt(thr)``, < 0 just below, > 0 just above."""
+    for pt in _POINTS:
+        t = sp.N(thr.subs(pt), 40)
+        vals = [sp.N(expr.subs(var, sp.sqrt(f * t)).subs(pt), 40) for f in (1, 0.9, 1.1)]
+        if not (abs(vals[0]) < 1e-25 * (1 + abs(vals[1])) and vals[1] < 0 < vals[2]):
+            return False
+    return True
+
+
+def _same_reduced(ground: str) -> bool:
+    """Printed (38) / (49) vs the Newton-Euler derivation, off the steady manifold too."""
+    Td, *dd = _reduced(ground, "derivation")
+    Tp, *dp = _reduced(ground, "printed")
+    pts = [{**pt, w1: sp.Rational(k + 1, 7)} for k, pt in enumerate(_POINTS)]
+    ok = True
+    for a, b in zip(dd, dp, strict=True):
+        a = a.subs(Td, sp.atan(p))
+        b = b.subs(Tp, sp.atan(p))
+        ok = ok and same(a, b, pts)
+    return ok
 
 
 def _printed_P0_boundary() -> float:
