@@ -21,6 +21,8 @@ from .equations import (
     state_names,
     velocity_of_C,
 )
+# simulation (issue 4)
+from .simulate import Trajectory, simulate, simulate_steady
 
 __version__ = "0.1.0"
 
@@ -37,4 +39,8 @@ __all__ = [
     "state_index",
     "state_names",
     "velocity_of_C",
+    # simulation (issue 4)
+    "Trajectory",
+    "simulate",
+    "simulate_steady",
 ]
