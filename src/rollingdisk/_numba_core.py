@@ -205,8 +205,9 @@ def _guard_value(k, g, sign1):
 def _locate(rough, h, t, y, f, dt_hi, k, sign1, K, ytmp, y_try, f_try, g, xtol):
     """Illinois regula falsi for the root of guard k within (t, t + dt_hi].
 
-    Returns (dt_root, n_rhs); y_try holds the state at the root, on the admissible side
-    unless the guard is exactly zero.
+    Returns (dt_root, n_rhs); y_try holds the state at dt_root, the admissible end of the
+    final bracket (within xtol of the root), or the start state if the guard is not
+    positive there.
     """
     n_rhs = 0
     a = 0.0
@@ -245,13 +246,15 @@ def _locate(rough, h, t, y, f, dt_hi, k, sign1, K, ytmp, y_try, f_try, g, xtol):
             if side == 1:
                 ga *= 0.5
             side = 1
-            if gc == 0.0:
-                break
-    # report the last admissible point at the bracket's upper end b (guard <= 0 there,
-    # within xtol of the root): the event time is where admissibility ends
-    _step(rough, h, t, y, f, b, K, ytmp, y_try, f_try)
-    n_rhs += _NS
-    return b, n_rhs
+    # report the last admissible point, the bracket's lower end a (guard > 0 there, within
+    # xtol of the root): the state before the event, where the model still holds
+    if a == 0.0:
+        for i in range(y.shape[0]):
+            y_try[i] = y[i]
+    else:
+        _step(rough, h, t, y, f, a, K, ytmp, y_try, f_try)
+        n_rhs += _NS
+    return a, n_rhs
 
 
 @numba.njit(cache=True)
@@ -432,3 +435,38 @@ def integrate(rough, h, t0, y0, t_end, rtol, atol, max_step, first_step, use_gua
             g_old[i] = g_new[i]
         h_abs = h_next
     return ts[:m], ys[:m], n_steps, n_rhs, status, event, h_abs
+
+
+# ------------------------------------------------------------------ stale-cache guard
+_DISPATCHERS = ("_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs",
+                "_smooth_rhs", "_rhs", "_normal_force", "_guards", "_step", "_error_norm",
+                "_rms", "initial_step", "_triggered", "_guard_value", "_locate", "integrate")
+
+
+def rhs_matches_kernels() -> bool:
+    """True if the compiled right-hand side agrees with the numpy kernels of equations.py.
+
+    numba's on-disk cache of a function does not notice a change in the functions it calls
+    (here: a kernel edited in equations.py would leave ``_rhs`` and ``integrate`` running
+    the old formula).  This probe catches that.
+    """
+    rng = np.random.default_rng(12345)
+    for rough, n, kernel in ((True, 8, _eq._rough_rhs), (False, 10, _eq._smooth_rhs)):
+        for h in (0.0, 0.37):
+            for _ in range(3):
+                y = rng.uniform(-1.0, 1.0, n)
+                out = np.empty(n)
+                _rhs(rough, h, y, out)
+                ref = np.array(kernel(h, y), dtype=float)
+                if not np.allclose(out, ref, rtol=1e-12, atol=1e-12):
+                    return False
+    return True
+
+
+def recompile_all() -> None:
+    """Recompile every compiled function from the current sources (refreshing the cache)."""
+    g = globals()
+    for name in _DISPATCHERS:
+        d = g[name]
+        if d.signatures:
+            d.recompile()

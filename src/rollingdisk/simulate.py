@@ -229,6 +229,11 @@ def jit_compile() -> float:
                            np.zeros(1), False, 10)
             core.integrate(rough, 0.1, 0.0, y0, 1e-3, 1e-8, 1e-8, np.inf, 0.0, guards,
                            np.array([5e-4]), True, 10)
+        if not core.rhs_matches_kernels():  # a stale on-disk cache (see _numba_core)
+            core.recompile_all()
+            if not core.rhs_matches_kernels():  # pragma: no cover - would be a numba bug
+                raise RuntimeError("the compiled right-hand side disagrees with "
+                                   "rollingdisk.equations")
         _compile_time = time.perf_counter() - t0
         _core = core
     return _compile_time
@@ -512,6 +517,11 @@ def _simulate_scipy(disk, ground, y, t0, t1, rtol, atol, max_step, first_step, t
             ys = np.column_stack([ys, sol.y_events[i_hit][-1]])
         if i_hit < len(guard_list):
             status = guard_status[i_hit]
+            if status == "edge-contact" and ys[i_theta, -1] * y[i_theta] <= 0:
+                # the root may land a rounding error past theta = 0, where h~ = h sgn(theta)
+                # flips: report the admissible side, as the compiled path does
+                ys = np.array(ys)
+                ys[i_theta, -1] = np.nextafter(0.0, y[i_theta])
             t_event = float(t_hit)
             message = _event_message(status, t_event, disk)
         else:
