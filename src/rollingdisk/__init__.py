@@ -21,6 +21,7 @@ from .equations import (
     state_names,
     velocity_of_C,
 )
+
 # simulation (issue 4)
 from .simulate import Trajectory, simulate, simulate_steady
 

@@ -295,8 +295,7 @@ def integrate(rough, h, t0, y0, t_end, rtol, atol, max_step, first_step, use_gua
             m += 1
             ie += 1
 
-    _rhs(rough, h, y, f)
-    n_rhs = 1
+    n_rhs = 0
     n_steps = 0
     t = t0
     _guards(rough, h, y, g_old)
@@ -309,6 +308,8 @@ def integrate(rough, h, t0, y0, t_end, rtol, atol, max_step, first_step, use_gua
                 m += 1
             return ts[:m], ys[:m], n_steps, n_rhs, LIFT_OFF if k == 0 else FELL_FLAT, k, 0.0
     sign1 = 1.0 if g_old[1] > 0.0 else -1.0
+    _rhs(rough, h, y, f)
+    n_rhs += 1
 
     if first_step > 0.0:
         h_abs = first_step
