@@ -31,7 +31,9 @@ def check_real(name: str, value, *, low: float | None = None, high: float | None
     """
     lo = "-inf" if low is None else f"{low:g}"
     hi = "inf" if high is None else f"{high:g}"
-    allowed = f"{'(' if low is None or low_open else '['}{lo}, {hi}{')' if high is None or high_open else ']'}"
+    left = "(" if low is None or low_open else "["
+    right = ")" if high is None or high_open else "]"
+    allowed = f"{left}{lo}, {hi}{right}"
     if isinstance(value, bool) or not isinstance(value, (int, float)) and not _is_numpy_real(value):
         raise ValueError(f"{name} must be a real number in {allowed}, got {value!r}")
     x = float(value)
