@@ -27,7 +27,7 @@ from scipy.integrate import solve_ivp
 from rollingdisk import Disk, simulate
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def thin_disk_model(ground: str):
     sp = pytest.importorskip("sympy")
     from sympy.physics.vector import ReferenceFrame, dynamicsymbols
@@ -127,3 +127,33 @@ def test_thin_disk_agrees_with_independent_euler_angle_model(ground, y0):
     np.testing.assert_allclose(tr.omega1, thd, atol=1e-8)
     np.testing.assert_allclose(tr.omega2, phid + psid * np.sin(th_r), atol=1e-8)
     np.testing.assert_allclose(tr.omega3, psid * np.cos(th_r), atol=1e-8)
+
+
+# ---------------------------------------------------------------------------- Kane's method
+@pytest.mark.parametrize("y0", [CASES[0][1], CASES[1][1]])
+def test_thin_disk_agrees_with_kanes_method_example(y0):
+    """Against the sympy.physics.mechanics rolling-disc example (tests/thin_disk_kane.py)."""
+    from thin_disk_kane import integrate_thin_disk
+
+    te = np.linspace(0, 20, 41)
+    tr = simulate(Disk(h=0.0), "rough", y0, (0, 20), t_eval=te, rtol=1e-12, atol=1e-13)
+    ref = integrate_thin_disk(y0, te).T
+    assert tr.status == "completed"
+    np.testing.assert_allclose(tr.y, ref, rtol=0, atol=1e-8)
+
+
+@pytest.mark.parametrize("ground,h,y0", [
+    ("rough", 0.3, [0.0, 0.0, 0.0, 0.5, 0.0, 0.1, 0.8, 2.0]),
+    ("rough", 1.0, [0.2, 0.1, 0.3, -1.0, 0.0, -0.1, -1.635, 1.5]),
+])
+def test_thick_disk_agrees_with_kanes_method(ground, h, y0):
+    """h > 0 against Kane's equations of the thick disk (tests/kane_model.py)."""
+    from kane_model import kane_rhs
+
+    T = 5.0
+    te = np.linspace(0, T, 11)
+    tr = simulate(Disk(h=h), ground, y0, (0, T), t_eval=te, rtol=1e-12, atol=1e-13)
+    assert tr.status == "completed"
+    ref = solve_ivp(kane_rhs(ground, h), (0, T), y0, method="DOP853", t_eval=te, rtol=1e-12,
+                    atol=1e-13)
+    np.testing.assert_allclose(tr.y, ref.y, rtol=0, atol=1e-8)
