@@ -388,3 +388,24 @@ def test_simulate_steady_rejects_non_motions():
 
 def test_default_tolerances_are_documented_values():
     assert 0 < DEFAULT_RTOL <= 1e-10 and 0 < DEFAULT_ATOL <= 1e-10
+
+
+def test_import_is_light_and_the_core_needs_no_sympy_or_matplotlib():
+    import subprocess
+    import sys
+
+    code = ("import sys\n"
+            "sys.modules['sympy'] = None\nsys.modules['matplotlib'] = None\n"
+            "import rollingdisk\n"
+            "assert 'numba' not in sys.modules, 'import rollingdisk must not load numba'\n"
+            "tr = rollingdisk.simulate(rollingdisk.Disk(h=0.1), 'rough',"
+            " [0, 0, 0, 0.3, 0, 0, 2.0, 0.5], (0, 1))\n"
+            "assert tr.status == 'completed' and 'numba' in sys.modules\n")
+    import os
+
+    import rollingdisk
+
+    src = os.path.dirname(os.path.dirname(rollingdisk.__file__))
+    env = dict(os.environ, PYTHONPATH=src)
+    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)
+    assert res.returncode == 0, res.stderr
