@@ -106,6 +106,29 @@ def test_frequency_of_small_oscillations_is_varpi(motion):
     assert energy_drift(tr) < 1e-12
 
 
+@pytest.mark.slow
+@pytest.mark.parametrize("ground", ["rough", "smooth"])
+def test_frequency_matches_varpi_over_random_stable_motions(ground):
+    """40 random stable circles per ground: h in [0, 3], |theta0| in [0.02, 1.45]."""
+    rng = np.random.default_rng(2024 if ground == "rough" else 2025)
+    done = 0
+    while done < 40:
+        h = float(rng.choice([0.0, rng.uniform(0, 3)]))
+        theta0 = float(rng.uniform(0.02, 1.45) * rng.choice([-1, 1]))
+        omega30 = float(rng.uniform(0.3, 6) * rng.choice([-1, 1]))
+        m = FakeSteady(ground, h, theta0, omega30)
+        v2 = _varpi2(m)
+        if not 0.1 < v2 < 400:
+            continue
+        period = 2 * math.pi / math.sqrt(v2)
+        tr = simulate_steady(m, 60 * period, perturb=1e-7, max_step=period / 20)
+        if tr.status != "completed":  # e.g. F_z of the steady state is 1, so never here
+            raise AssertionError(f"{ground} {h} {theta0} {omega30}: {tr.message}")
+        assert oscillation_frequency(tr) == pytest.approx(math.sqrt(v2), rel=1e-6), (
+            ground, h, theta0, omega30)
+        done += 1
+
+
 @pytest.mark.parametrize("motion", _motions(UNSTABLE, {}))
 def test_growth_rate_of_unstable_motion_is_sqrt_minus_varpi2(motion):
     v2 = _varpi2(motion)
@@ -335,6 +358,8 @@ def test_trajectory_is_frozen_and_named():
         tr.t[0] = 1.0
     np.testing.assert_array_equal(tr.theta, tr.y[3])
     np.testing.assert_array_equal(tr.omega3, tr.y[7])
+    with pytest.raises(ValueError):
+        tr.V_X  # noqa: B018 - rough ground has no V_X in its state
     cols = tr.as_columns()
     assert list(cols) == ["t", "X_C", "Y_C", "psi", "theta", "phi", "omega1", "omega2",
                           "omega3", "X_P", "Y_P", "F_x", "F_y", "F_z", "E"]
@@ -369,6 +394,7 @@ def test_simulate_steady_perturbs_theta_only():
     (dict(method="rk4"), "method"),
     (dict(t_eval=[0.5, 0.2]), "t_eval"),
     (dict(t_eval=[0.5, 7]), "t_eval"),
+    (dict(max_steps=0), "max_steps"),
 ])
 def test_invalid_input_raises_valueerror_naming_the_parameter(kwargs, match):
     args = dict(disk=Disk(h=0.1), ground="rough", y0=[0, 0, 0, 0.3, 0, 0, 2.0, 0.5],

@@ -157,6 +157,16 @@ class Trajectory:
     omega2 = property(lambda self: self.component("omega2"), doc="omega2 (eq. 3).")
     omega3 = property(lambda self: self.component("omega3"), doc="omega3 (eq. 3).")
 
+    @property
+    def V_X(self) -> np.ndarray:
+        """V_X, inertial velocity of C (smooth ground only; constant there)."""
+        return self.component("V_X")
+
+    @property
+    def V_Y(self) -> np.ndarray:
+        """V_Y, inertial velocity of C (smooth ground only; constant there)."""
+        return self.component("V_Y")
+
     @cached_property
     def _P(self):
         return contact_point(self.disk, self.ground, self.y)
@@ -347,6 +357,9 @@ def simulate(disk: Disk, ground: str, y0, t_span: Sequence[float], *,
         if max_step != math.inf else math.inf
     first_step = None if first_step is None else check_real(
         "first_step", first_step, low=0.0, low_open=True)
+    if isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer)) \
+            or max_steps < 1:
+        raise ValueError(f"max_steps must be an integer >= 1, got {max_steps!r}")
     if method not in _METHODS:
         raise ValueError(f"method must be one of {_METHODS}, got {method!r}")
     if t_eval is not None:
