@@ -435,3 +435,18 @@ def test_import_is_light_and_the_core_needs_no_sympy_or_matplotlib():
     env = dict(os.environ, PYTHONPATH=src)
     res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)
     assert res.returncode == 0, res.stderr
+
+
+@pytest.mark.parametrize("t_eval", [None, np.linspace(1, 20, 50), np.linspace(0.05, 0.15, 5),
+                                    np.linspace(0, 0.15, 4)])
+def test_event_output_is_the_same_with_and_without_progress_chunks(t_eval):
+    y0 = [0, 0, 0, 0.1, 0, -0.5, 1.0, 0]  # lands on its other edge at t ~ 0.2
+    a = simulate(Disk(h=0.2), "rough", y0, (0, 20), t_eval=t_eval)
+    b = simulate(Disk(h=0.2), "rough", y0, (0, 20), t_eval=t_eval, progress=lambda f: None)
+    assert a.status == b.status == "edge-contact"
+    assert a.t_event == pytest.approx(b.t_event, abs=1e-12)
+    if t_eval is not None:
+        np.testing.assert_allclose(a.t, b.t, atol=1e-12)
+        np.testing.assert_allclose(a.y, b.y, atol=1e-10)
+        expected = [t for t in t_eval if t <= a.t_event] + [a.t_event]
+        np.testing.assert_allclose(a.t, expected, atol=1e-12)

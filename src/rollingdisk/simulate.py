@@ -434,10 +434,12 @@ def _simulate_numba(disk, ground, y, t0, t1, rtol, atol, max_step, first_step, t
             n_steps += ns
             n_rhs += nr
             if has_t_eval:
-                keep = ts_c > tc if t_parts else np.ones(ts_c.size, bool)
-                if code == 1:
-                    # drop the chunk end unless it was requested
-                    keep &= np.isin(ts_c, te_c) if has_c else np.zeros(ts_c.size, bool)
+                if has_c:  # the requested times, and the event point if a guard fired
+                    keep = ts_c > tc if t_parts else np.ones(ts_c.size, bool)
+                else:  # no requested time in this chunk: only an event point
+                    keep = np.zeros(ts_c.size, bool)
+                    if code != 1:
+                        keep[-1] = True
                 t_parts.append(ts_c[keep])
                 y_parts.append(ys_c[keep])
             else:
