@@ -158,3 +158,11 @@ def test_steady_start_without_the_steady_module_says_so(capsys, monkeypatch):
     assert main(["simulate", "--h", "0.1", "--theta0", "0.3", "--Omega0", "2", "--t-end",
                  "1"]) == 2
     assert "--state" in capsys.readouterr().err
+
+
+@needs_steady
+def test_unstable_circle_reports_its_growth_rate(capsys):
+    rec = run_json(capsys, "--h", "0.3", "--theta0", "0.3", "--rC", "2", "--perturb", "1e-9",
+                   "--t-end", "60")
+    assert rec["varpi2"] < 0 and rec["varpi"] is None
+    assert rec["growth_rate"] == pytest.approx(math.sqrt(-rec["varpi2"]), rel=1e-3)

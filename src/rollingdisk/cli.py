@@ -281,8 +281,9 @@ def _run_simulate(args) -> int:
             bar.close()
     varpi2 = _predicted_varpi2(motion)
     freq = oscillation_frequency(traj)
-    # the linear regime of an unstable start: up to 1e3 times the perturbation (>= 1e-6)
-    growth = growth_rate(traj, max_amplitude=max(1e-6, 1e3 * abs(args.perturb))) \
+    # the linear regime of an unstable start: up to 1e3 times the perturbation (>= 1e-4;
+    # the nonlinear bias is about max_amplitude, relatively)
+    growth = growth_rate(traj, max_amplitude=max(1e-4, 1e3 * abs(args.perturb))) \
         if varpi2 is not None and varpi2 < 0 else None
     theta = traj.theta
     record = {

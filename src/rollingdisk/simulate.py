@@ -667,13 +667,14 @@ def oscillation_frequency(traj: Trajectory, *, min_periods: int = 2) -> float | 
 
 
 def growth_rate(traj: Trajectory, *, theta_ref: float | None = None,
-                max_amplitude: float = 1e-3) -> float | None:
+                max_amplitude: float = 1e-6) -> float | None:
     """Exponential growth rate of an unstable departure from a steady motion, or None.
 
-    In the linear regime (eq. 39 / 50 with ``varpi^2 < 0``) ``omega1 = alpha e^{lambda t}
-    + beta e^{-lambda t}``; ``lambda = sqrt(-varpi^2)`` is fitted as the slope of
-    ``log |omega1|`` over the part of the run where ``|theta - theta_ref| <= max_amplitude``
-    (still linear), once the decaying mode has died out (``lambda (t - t0) >= 6``).
+    In the linear regime (eq. 39 / 50 with ``varpi^2 < 0``)
+    ``omega1 = alpha e^{lambda t} + beta e^{-lambda t}`` exactly; ``lambda`` (to compare
+    with ``sqrt(-varpi^2)``) is fitted by variable projection (``alpha, beta`` by linear
+    least squares for each trial ``lambda``, relative residuals) over the stored points
+    where ``|theta - theta_ref| <= max_amplitude``, the part still linear.
 
     Parameters
     ----------
@@ -682,28 +683,47 @@ def growth_rate(traj: Trajectory, *, theta_ref: float | None = None,
         The steady inclination; ``traj.theta_ref`` (set by :func:`simulate_steady`) or
         ``theta(0)`` by default.
     max_amplitude : float
-        Largest departure ``|theta - theta_ref|`` counted as linear.
+        Largest departure ``|theta - theta_ref|`` counted as linear.  The nonlinear terms
+        bias the result by about this much, relatively.
+
+    Returns
+    -------
+    float or None
+        None when the linear part holds fewer than 8 points or no growth.
     """
+    from scipy.optimize import minimize_scalar
+
     ref = theta_ref if theta_ref is not None else (
         traj.theta_ref if traj.theta_ref is not None else float(traj.theta[0]))
-    t = traj.t
     dev = np.abs(traj.theta - ref)
     over = np.nonzero(dev > max_amplitude)[0]
-    end = over[0] if over.size else t.size
-    t, w = t[:end], np.abs(traj.omega1[:end])
-    ok = w > 0
-    t, w = t[ok], w[ok]
-    if t.size < 10:
+    end = over[0] if over.size else traj.t.size
+    tau = traj.t[:end] - traj.t[0]
+    w = traj.omega1[:end]
+    if tau.size < 8 or not np.any(w != 0):
         return None
-    half = t >= t[0] + 0.5 * (t[-1] - t[0])
-    lam = np.polyfit(t[half], np.log(w[half]), 1)[0]
-    if not lam > 0:
+    scale = np.abs(w) + 1e-3 * np.max(np.abs(w))  # relative residuals, floored near 0
+
+    def misfit(lam):
+        e = np.exp(-lam * (tau[-1] - tau))  # e^{lam tau}, normalised at the end
+        f = np.exp(-lam * tau)
+        M = np.column_stack([e, f]) / scale[:, None]
+        coef, *_ = np.linalg.lstsq(M, w / scale, rcond=None)
+        r = M @ coef - w / scale
+        return float(r @ r)
+
+    # a first guess from the log-slope of the second half
+    half = tau >= 0.5 * tau[-1]
+    ok = half & (w != 0)
+    if np.count_nonzero(ok) < 2:
         return None
-    sel = t - traj.t[0] >= 6.0 / lam
-    if np.count_nonzero(sel) < 10:
+    lam0 = np.polyfit(tau[ok], np.log(np.abs(w[ok])), 1)[0]
+    if not lam0 > 0:
         return None
-    lam = np.polyfit(t[sel], np.log(w[sel]), 1)[0]
-    return float(lam) if lam > 0 else None
+    res = minimize_scalar(misfit, bounds=(0.5 * lam0, 2.0 * lam0), method="bounded",
+                          options={"xatol": 1e-10 * lam0})
+    lam = float(res.x)
+    return lam if lam > 0 else None
 
 
 def fit_circle(x, y) -> tuple[float, float, float]:
