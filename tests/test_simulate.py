@@ -450,3 +450,65 @@ def test_event_output_is_the_same_with_and_without_progress_chunks(t_eval):
         np.testing.assert_allclose(a.y, b.y, atol=1e-10)
         expected = [t for t in t_eval if t <= a.t_event] + [a.t_event]
         np.testing.assert_allclose(a.t, expected, atol=1e-12)
+
+
+# ---------------------------------------------------------------------------- steady module
+def _has(module: str) -> bool:
+    import importlib
+
+    try:
+        importlib.import_module(module)
+    except ImportError:
+        return False
+    return True
+
+
+needs_steady = pytest.mark.skipif(
+    not (_has("rollingdisk.steady") and _has("rollingdisk.stability")),
+    reason="rollingdisk.steady / stability not merged yet")
+
+# (ground, h, theta0, kind, value): circles given Omega0 or r_C, straight lines given omega0
+STEADY_ROWS = [
+    ("rough", 0.1, 0.3, "Omega0", 2.0), ("rough", 0.5, 1.0, "Omega0", -3.0),
+    ("rough", 0.0, 0.8, "r_C", 1.5), ("rough", 2.0, 1.2, "Omega0", 1.0),
+    ("rough", 0.3, 0.3, "r_C", 2.0), ("rough", 0.0, 0.3, "Omega0", 0.5),
+    ("smooth", 0.3, 0.8, "Omega0", 1.0), ("smooth", 0.0, 0.5, "Omega0", 3.0),
+    ("smooth", 0.3, 0.3, "Omega0", 1.5), ("smooth", 1.0, 1.2, "Omega0", -2.0),
+    ("rough", 0.1, None, "omega0", 2.0), ("rough", 0.1, None, "omega0", 0.3),
+    ("smooth", 0.5, None, "omega0", 3.0),
+]
+
+
+@needs_steady
+@pytest.mark.parametrize("row", STEADY_ROWS, ids=str)
+def test_simulation_confirms_the_stability_module(row):
+    """Closed-form varpi^2 of rollingdisk.stability vs the simulated motion (both ways)."""
+    from rollingdisk.stability import stability
+    from rollingdisk.steady import steady_motion, straight_line
+
+    ground, h, theta0, kind, value = row
+    disk = Disk(h=h)
+    if kind == "omega0":
+        m = straight_line(disk, ground, value)
+    else:
+        m = steady_motion(disk, ground, theta0, **{kind: value})
+    st = stability(m)
+    # independent linearization: the finite-difference Jacobian of tests/steady_numeric.py
+    assert st.varpi2 == pytest.approx(_varpi2(m), rel=1e-6, abs=1e-9)
+    if st.stable:
+        period = 2 * math.pi / st.varpi
+        tr = simulate_steady(m, 60 * period, perturb=1e-7, max_step=period / 20)
+        assert tr.status == "completed"
+        assert oscillation_frequency(tr) == pytest.approx(st.varpi, rel=1e-6)
+    else:
+        lam = st.growth_rate
+        tr = simulate_steady(m, 25 / lam, perturb=1e-12, atol=1e-16)
+        assert growth_rate(tr) == pytest.approx(lam, rel=1e-3)
+    if not st.stable:
+        return  # round-off grows on an unstable one
+    # unperturbed: it stays on its steady motion; P on its circle of radius |r_P|
+    tr0 = simulate_steady(m, 20.0)
+    assert np.max(np.abs(tr0.theta - m.theta0)) < 1e-9
+    if kind != "omega0":
+        assert fit_circle(tr0.X_P, tr0.Y_P)[2] == pytest.approx(abs(m.r_P), rel=1e-8,
+                                                                 abs=1e-10)
