@@ -22,6 +22,9 @@ from .equations import (
     velocity_of_C,
 )
 
+# simulation (issue 4)
+from .simulate import Trajectory, simulate, simulate_steady
+
 __version__ = "0.1.0"
 
 __all__ = [
@@ -37,4 +40,8 @@ __all__ = [
     "state_index",
     "state_names",
     "velocity_of_C",
+    # simulation (issue 4)
+    "Trajectory",
+    "simulate",
+    "simulate_steady",
 ]

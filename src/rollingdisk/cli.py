@@ -63,17 +63,372 @@ def _run_derive(args) -> int:
 
 # ---------------------------------------------------------------------------- steady
 def _add_steady(sub) -> None:
-    """Registered by the steady-motion issue."""
+    """``rollingdisk steady``: one steady motion and its stability (sections 3, 4)."""
+    p = sub.add_parser(
+        "steady", help="a steady motion (straight line, circle, spin) and its stability",
+        description="Steady motion of the disk (paper sections 3-4): give --theta0 and one of "
+        "--Omega0, --rC, --rP for a circle, or --motion straight --omega0 W. Angles in "
+        "radians or with a deg suffix; write negative angles as --theta0=-30deg.")
+    p.add_argument("--ground", choices=("rough", "smooth"), default="rough",
+                   help="rough (no slip, default) or smooth (no friction)")
+    p.add_argument("--h", type=float, required=True, help="half-thickness / radius, h >= 0")
+    p.add_argument("--theta0", type=parse_angle, help="inclination (radians, or e.g. 30deg)")
+    p.add_argument("--motion", choices=("circle", "straight"), default=None,
+                   help="circle (with spin in place) or straight; default from the options")
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("--Omega0", type=float, help="spin rate d psi/dt of a circle")
+    g.add_argument("--rC", type=float, help="signed radius of the circle of the centre C")
+    g.add_argument("--rP", type=float, help="signed radius of the circle of the contact point")
+    g.add_argument("--omega0", type=float, help="rolling rate of a straight line")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(handler=_run_steady)
+
+
+def _steady_record(motion, stab) -> dict:
+    rec = motion.as_dict()
+    rec["theta0_deg"] = math.degrees(motion.theta0)
+    rec.update(varpi2=stab.varpi2, stable=bool(stab.stable),
+               varpi=None if not stab.stable else stab.varpi, period=stab.period,
+               growth_rate=stab.growth_rate)
+    return rec
+
+
+def _run_steady(args) -> int:
+    from .disk import Disk
+    from .stability import stability
+    from .steady import steady_motion, straight_line
+
+    disk = Disk(h=args.h)
+    straight = args.motion == "straight" or (args.motion is None and args.omega0 is not None)
+    if straight:
+        if args.omega0 is None:
+            raise CLIError("rollingdisk steady: --motion straight needs --omega0")
+        motion = straight_line(disk, args.ground, args.omega0)
+        if args.theta0 is not None and abs(abs(args.theta0) - motion.theta0) > 1e-9:
+            raise CLIError(
+                f"rollingdisk steady: a straight line is steady only at theta0 = arctan(h) = "
+                f"{motion.theta0:.6g} rad ({math.degrees(motion.theta0):.4g}deg), "
+                f"not {args.theta0:.6g}")
+        if args.theta0 is not None and args.theta0 < 0:
+            motion = straight_line(disk, args.ground, args.omega0, lean=-1)
+    else:
+        if args.omega0 is not None:
+            raise CLIError("rollingdisk steady: --omega0 is for --motion straight; "
+                           "circles take --Omega0, --rC or --rP")
+        if args.theta0 is None:
+            raise CLIError("rollingdisk steady: give --theta0 (e.g. 30deg) for a circle")
+        if args.Omega0 is None and args.rC is None and args.rP is None:
+            raise CLIError("rollingdisk steady: give one of --Omega0, --rC, --rP "
+                           "(or --motion straight --omega0 W)")
+        motion = steady_motion(disk, args.ground, args.theta0, Omega0=args.Omega0,
+                               r_C=args.rC, r_P=args.rP)
+    rec = _steady_record(motion, stability(motion))
+    if args.json:
+        import json
+
+        print(json.dumps(rec))
+        return 0
+    labels = [
+        ("ground", "ground"), ("h", "half-thickness / radius"), ("motion", "kind of motion"),
+        ("theta0", "inclination [rad]"), ("theta0_deg", "inclination [deg]"),
+        ("Omega0", "spin rate d psi/dt"), ("omega0", "rolling rate d phi/dt"),
+        ("omega20", "angular velocity, omega2"), ("omega30", "angular velocity, omega3"),
+        ("r_C", "radius of the circle of C"), ("r_P", "radius of the circle of P"),
+        ("v_C", "speed of C"),
+        ("F_y", "friction F_y = -r_C Omega0^2, points to the centre (eq. 27)"),
+        ("varpi2", "varpi^2 of small oscillations"), ("stable", "stable (varpi^2 > 0)"),
+        ("period", "period 2 pi / varpi"), ("growth_rate", "growth rate sqrt(-varpi^2)"),
+    ]
+    for key, text in labels:
+        v = rec[key]
+        if v is None:
+            continue
+        val = f"{v:.10g}" if isinstance(v, float) else str(v)
+        print(f"{key:<12} {val:>18}   {text}")
+    print("(dimensionless: m = a = g = 1, time unit sqrt(a/g))")
+    return 0
 
 
 # ---------------------------------------------------------------------------- thresholds
 def _add_thresholds(sub) -> None:
-    """Registered by the steady-motion issue."""
+    """``rollingdisk thresholds``: critical speeds of eqs. (42), (43), (53), (57)."""
+    p = sub.add_parser("thresholds", help="critical squared speeds for a disk (eqs. 42, 43, "
+                       "53, 57)")
+    p.add_argument("--h", type=float, required=True, help="half-thickness / radius, h >= 0")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(handler=_run_thresholds)
+
+
+def _run_thresholds(args) -> int:
+    from .stability import thresholds
+
+    d = thresholds(args.h).as_dict()
+    if args.json:
+        import json
+
+        print(json.dumps(d))
+        return 0
+    eqs = {("rough", "straight_line_omega20_sq"): "(42)",
+           ("rough", "se_circle_omega30_sq"): "(43)",
+           ("smooth", "straight_line_omega20_sq"): "(53)",
+           ("smooth", "spin_omega30_sq"): "(57)"}
+    print(f"stability thresholds for h = {args.h:g} (stable above):")
+    for ground, rows in d.items():
+        for key, v in rows.items():
+            print(f"  {ground:<7} {key:<26} {v:.10g}   eq. {eqs[(ground, key)]}")
+    return 0
 
 
 # ---------------------------------------------------------------------------- simulate
 def _add_simulate(sub) -> None:
-    """Registered by the simulation issue."""
+    """``rollingdisk simulate``: integrate from a (perturbed) steady motion or any state."""
+    p = sub.add_parser(
+        "simulate", help="simulate the disk from a perturbed steady motion or any state",
+        description="Integrate the equations of motion (eqs. 1-13, 37, 38 / 49) with guard "
+        "events: lift-off (F_z = 0), edge contact (theta = 0 with h > 0), falling flat. "
+        "Start from a steady motion (--theta0 with one of --Omega0, --rC, --rP, or "
+        "--motion straight --omega0 W), optionally perturbed (--perturb adds to theta), "
+        "or from any state (--state theta=0.3,omega2=1.5,omega3=0.7; unnamed components "
+        "are 0). Write negative angles as --theta0=-30deg.")
+    p.add_argument("--ground", choices=("rough", "smooth"), default="rough",
+                   help="rough (no slip, default) or smooth (no friction)")
+    p.add_argument("--h", type=float, required=True, help="half-thickness / radius, h >= 0")
+    p.add_argument("--theta0", type=parse_angle, help="steady inclination (radians or 30deg)")
+    p.add_argument("--motion", choices=("circle", "straight"), default=None,
+                   help="steady motion kind; default from the options")
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("--Omega0", type=float, help="spin rate d psi/dt of a steady circle")
+    g.add_argument("--rC", type=float, help="signed radius of the circle of C")
+    g.add_argument("--rP", type=float, help="signed radius of the circle of P")
+    g.add_argument("--omega0", type=float, help="rolling rate of a steady straight line")
+    g.add_argument("--state", type=str, metavar="NAME=VALUE,...",
+                   help="an arbitrary initial state by component names (X_C, Y_C, [V_X, "
+                   "V_Y,] psi, theta, phi, omega1, omega2, omega3; angles may have a deg "
+                   "suffix); unnamed components are 0")
+    p.add_argument("--perturb", type=float, default=0.0, help="added to theta(0) (default 0)")
+    p.add_argument("--t-end", dest="t_end", type=float, required=True,
+                   help="end time (units sqrt(a/g))")
+    p.add_argument("--rtol", type=float, default=None, help="relative tolerance")
+    p.add_argument("--atol", type=float, default=None, help="absolute tolerance")
+    p.add_argument("--method", choices=("dop853", "scipy"), default="dop853",
+                   help="compiled DOP853 (default) or scipy's solve_ivp")
+    p.add_argument("--out", type=str, default=None, metavar="FILE.csv",
+                   help="write the trajectory as CSV (t, X_C, Y_C, psi, theta, phi, omega1, "
+                   "omega2, omega3, X_P, Y_P, F_x, F_y, F_z, E)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(handler=_run_simulate)
+
+
+def _parse_state(text: str, ground: str) -> list[float]:
+    from .equations import state_names
+
+    names = state_names(ground)
+    values = dict.fromkeys(names, 0.0)
+    seen = set()
+    for item in filter(None, (part.strip() for part in text.split(","))):
+        key, sep, val = item.partition("=")
+        key = key.strip()
+        if not sep or key not in values:
+            raise CLIError(f"rollingdisk simulate: --state takes NAME=VALUE pairs with NAME in "
+                           f"{', '.join(names)} on {ground} ground, got {item!r}")
+        if key in seen:
+            raise CLIError(f"rollingdisk simulate: --state gives {key} twice")
+        seen.add(key)
+        try:
+            values[key] = parse_angle(val)
+        except argparse.ArgumentTypeError:
+            raise CLIError(f"rollingdisk simulate: --state {key}: not a number: {val!r}") \
+                from None
+    if "theta" not in seen:
+        raise CLIError("rollingdisk simulate: --state must give theta (e.g. theta=0.3)")
+    return [values[n] for n in names]
+
+
+def _simulate_motion(args, disk):
+    """The steady motion asked for, or None with --state."""
+    if args.state is not None:
+        if args.theta0 is not None or args.motion is not None:
+            raise CLIError("rollingdisk simulate: --state gives the whole initial state; "
+                           "leave out --theta0 and --motion")
+        return None
+    straight = args.motion == "straight" or (args.motion is None and args.omega0 is not None)
+    if straight and args.omega0 is None:
+        raise CLIError("rollingdisk simulate: --motion straight needs --omega0")
+    if not straight:
+        if args.omega0 is not None:
+            raise CLIError("rollingdisk simulate: --omega0 is for --motion straight; circles "
+                           "take --Omega0, --rC or --rP")
+        if args.theta0 is None:
+            raise CLIError("rollingdisk simulate: give --theta0 with one of --Omega0, --rC, "
+                           "--rP, or --motion straight --omega0 W, or an initial --state")
+        if args.Omega0 is None and args.rC is None and args.rP is None:
+            raise CLIError("rollingdisk simulate: give one of --Omega0, --rC, --rP with "
+                           "--theta0")
+    try:
+        from .steady import steady_motion, straight_line
+    except ImportError:  # the steady-motion module is not in this build
+        raise CLIError("rollingdisk simulate: steady motions need rollingdisk.steady, "
+                       "which this build lacks; give the initial state with --state") from None
+    if straight:
+        motion = straight_line(disk, args.ground, args.omega0)
+        if args.theta0 is not None and abs(abs(args.theta0) - motion.theta0) > 1e-9:
+            raise CLIError(
+                f"rollingdisk simulate: a straight line is steady only at theta0 = "
+                f"arctan(h) = {motion.theta0:.6g} rad, not {args.theta0:.6g}")
+        if args.theta0 is not None and args.theta0 < 0:
+            motion = straight_line(disk, args.ground, args.omega0, lean=-1)
+        return motion
+    return steady_motion(disk, args.ground, args.theta0, Omega0=args.Omega0, r_C=args.rC,
+                         r_P=args.rP)
+
+
+def _predicted_varpi2(motion):
+    if motion is None:
+        return None
+    try:
+        from .stability import stability
+    except ImportError:  # the stability module is not in this build
+        return None
+    return float(stability(motion).varpi2)
+
+
+class _ProgressBar:
+    """A plain text bar on stderr, shown only once a run has taken more than a second."""
+
+    def __init__(self, stream, delay: float = 1.0, width: int = 40):
+        import time
+
+        self.stream, self.delay, self.width = stream, delay, width
+        self.clock = time.monotonic
+        self.start = self.clock()
+        self.shown = False
+
+    def __call__(self, fraction: float) -> None:
+        if not self.shown and self.clock() - self.start < self.delay:
+            return
+        self.shown = True
+        n = int(round(self.width * min(max(fraction, 0.0), 1.0)))
+        self.stream.write(f"\rsimulating [{'#' * n}{'.' * (self.width - n)}] "
+                          f"{100 * fraction:5.1f}%")
+        self.stream.flush()
+
+    def close(self) -> None:
+        if self.shown:
+            self.stream.write("\n")
+            self.stream.flush()
+
+
+def _write_csv_atomic(path: str, columns: dict) -> None:
+    import os
+    import tempfile
+
+    import numpy as np
+
+    target = os.path.abspath(path)
+    folder = os.path.dirname(target)
+    fd, tmp = tempfile.mkstemp(prefix=".rollingdisk-", suffix=".csv.tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "w", newline="") as fh:
+            data = np.column_stack(list(columns.values()))
+            np.savetxt(fh, data, delimiter=",", header=",".join(columns), comments="",
+                       fmt="%.17g")
+        os.replace(tmp, target)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+
+
+def _run_simulate(args) -> int:
+    import json
+
+    import numpy as np
+
+    from .disk import Disk
+    from .simulate import (
+        DEFAULT_ATOL,
+        DEFAULT_RTOL,
+        energy_drift,
+        growth_rate,
+        jit_compile,
+        oscillation_frequency,
+        simulate,
+        simulate_steady,
+    )
+
+    disk = Disk(h=args.h)
+    motion = _simulate_motion(args, disk)
+    if args.out is not None:
+        import os
+
+        folder = os.path.dirname(os.path.abspath(args.out))
+        if not os.path.isdir(folder):
+            raise CLIError(f"rollingdisk simulate: --out: no such directory: {folder}")
+    options = dict(rtol=DEFAULT_RTOL if args.rtol is None else args.rtol,
+                   atol=DEFAULT_ATOL if args.atol is None else args.atol, method=args.method)
+    if args.method == "dop853":
+        jit_compile()  # load (or compile) before the clock and the bar start
+    bar = None if args.json or args.method != "dop853" else _ProgressBar(sys.stderr)
+    if bar is not None:
+        options["progress"] = bar
+    try:
+        if motion is not None:
+            traj = simulate_steady(motion, args.t_end, perturb=args.perturb, **options)
+        else:
+            y0 = _parse_state(args.state, args.ground)
+            from .equations import state_index
+
+            y0[state_index(args.ground, "theta")] += args.perturb
+            if not (math.isfinite(args.t_end) and args.t_end > 0):
+                raise ValueError(f"t_end must be a finite number > 0, got {args.t_end!r}")
+            traj = simulate(disk, args.ground, y0, (0.0, args.t_end), **options)
+    finally:
+        if bar is not None:
+            bar.close()
+    varpi2 = _predicted_varpi2(motion)
+    freq = oscillation_frequency(traj)
+    # the linear regime of an unstable start: up to 1e3 times the perturbation (>= 1e-4;
+    # the nonlinear bias is about max_amplitude, relatively)
+    growth = growth_rate(traj, max_amplitude=max(1e-4, 1e3 * abs(args.perturb))) \
+        if varpi2 is not None and varpi2 < 0 else None
+    theta = traj.theta
+    record = {
+        "status": traj.status,
+        "message": traj.message,
+        "ground": traj.ground,
+        "h": disk.h,
+        "t_end": float(traj.t[-1]),
+        "n_steps": traj.n_steps,
+        "n_rhs": traj.n_rhs,
+        "energy_drift": energy_drift(traj),
+        "theta_min": float(np.min(theta)),
+        "theta_max": float(np.max(theta)),
+        "theta_frequency": freq,
+        "varpi": math.sqrt(varpi2) if varpi2 is not None and varpi2 > 0 else None,
+        "varpi2": varpi2,
+        "growth_rate": growth,
+        "wall_time_s": traj.wall_time,
+        "method": traj.method,
+    }
+    if args.out is not None:
+        _write_csv_atomic(args.out, traj.as_columns())
+        record["out"] = args.out
+    if args.json:
+        print(json.dumps(record, indent=2))
+    else:
+        print(traj.message)
+        for key in ("t_end", "n_steps", "energy_drift", "theta_min", "theta_max",
+                    "theta_frequency", "varpi", "growth_rate", "wall_time_s"):
+            val = record[key]
+            if val is None:
+                continue
+            print(f"  {key:16s} {val:.10g}" if isinstance(val, float) else
+                  f"  {key:16s} {val}")
+        if args.out is not None:
+            print(f"  wrote {args.out}")
+    return 0
 
 
 # ---------------------------------------------------------------------------- figures, maps

@@ -1,0 +1,168 @@
+"""``rollingdisk simulate``: the CLI over simulate() (tests call main() directly)."""
+
+from __future__ import annotations
+
+import csv
+import importlib
+import io
+import json
+import math
+import os
+
+import numpy as np
+import pytest
+
+from rollingdisk import Disk, simulate
+from rollingdisk.cli import _ProgressBar, main
+from rollingdisk.simulate import energy_drift
+
+STATE = "theta=0.3,omega2=2.0,omega3=0.5"
+COLUMNS = ["t", "X_C", "Y_C", "psi", "theta", "phi", "omega1", "omega2", "omega3", "X_P",
+           "Y_P", "F_x", "F_y", "F_z", "E"]
+
+
+def run_json(capsys, *argv):
+    assert main(["simulate", *argv, "--json"]) == 0
+    out, err = capsys.readouterr()
+    assert err == ""  # no progress bar with --json
+    return json.loads(out)
+
+
+def test_json_from_an_arbitrary_state(capsys):
+    rec = run_json(capsys, "--h", "0.1", "--state", STATE, "--t-end", "20")
+    for key in ("status", "message", "t_end", "n_steps", "energy_drift", "theta_min",
+                "theta_max", "theta_frequency", "varpi", "wall_time_s"):
+        assert key in rec
+    assert rec["status"] == "completed" and rec["t_end"] == 20.0
+    assert rec["varpi"] is None  # no steady motion to predict from
+    tr = simulate(Disk(h=0.1), "rough", [0, 0, 0, 0.3, 0, 0, 2.0, 0.5], (0, 20))
+    assert rec["n_steps"] == tr.n_steps
+    assert rec["energy_drift"] == pytest.approx(energy_drift(tr), rel=1e-6, abs=1e-15)
+    assert rec["theta_min"] == pytest.approx(tr.theta.min())
+    assert rec["theta_max"] == pytest.approx(tr.theta.max())
+    assert rec["theta_frequency"] > 0
+    assert 0 <= rec["wall_time_s"] < 5
+
+
+def test_state_angles_in_degrees_and_smooth_ground(capsys):
+    rec = run_json(capsys, "--ground", "smooth", "--h", "0.2", "--state",
+                   "theta=30deg,omega2=1.0,omega3=2.0,V_X=0.5", "--t-end", "5")
+    assert rec["status"] == "completed" and rec["ground"] == "smooth"
+    assert rec["theta_max"] >= math.radians(30) - 1e-12
+
+
+def test_guard_event_is_reported(capsys):
+    rec = run_json(capsys, "--h", "0.2", "--state", "theta=0.1,omega1=-0.5,omega2=1",
+                   "--t-end", "20")
+    assert rec["status"] == "edge-contact" and rec["t_end"] < 1
+    assert "edge" in rec["message"]
+
+
+def test_csv_output(tmp_path, capsys):
+    out = tmp_path / "traj.csv"
+    assert main(["simulate", "--h", "0.1", "--state", STATE, "--t-end", "5", "--out",
+                 str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "completed" in text and str(out) in text
+    with open(out, newline="") as fh:
+        rows = list(csv.reader(fh))
+    assert rows[0] == COLUMNS
+    data = np.array(rows[1:], dtype=float)
+    # without --json the run goes in chunks of time for the progress bar
+    tr = simulate(Disk(h=0.1), "rough", [0, 0, 0, 0.3, 0, 0, 2.0, 0.5], (0, 5),
+                  progress=lambda f: None)
+    assert data.shape == (tr.t.size, len(COLUMNS))
+    np.testing.assert_allclose(data[:, COLUMNS.index("F_z")], tr.F_z, rtol=1e-8, atol=1e-10)
+    np.testing.assert_allclose(data[:, -1], tr.E, rtol=1e-12)
+    assert sorted(os.listdir(tmp_path)) == ["traj.csv"]  # no temporary left behind
+
+
+def test_csv_is_not_left_half_written(tmp_path, monkeypatch):
+    out = tmp_path / "traj.csv"
+
+    def boom(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(np, "savetxt", boom)
+    assert main(["simulate", "--h", "0.1", "--state", STATE, "--t-end", "1", "--out",
+                 str(out)]) == 130
+    assert os.listdir(tmp_path) == []
+
+
+def test_progress_bar_draws_on_stderr():
+    buf = io.StringIO()
+    bar = _ProgressBar(buf, delay=0.0, width=10)
+    for f in (0.0, 0.5, 1.0):
+        bar(f)
+    bar.close()
+    text = buf.getvalue()
+    assert "[#####.....]" in text and "100.0%" in text and text.endswith("\n")
+    quiet = io.StringIO()
+    bar = _ProgressBar(quiet, delay=60.0)
+    bar(0.5)
+    bar.close()
+    assert quiet.getvalue() == ""
+
+
+@pytest.mark.parametrize("argv,match", [
+    (["--h", "0.1", "--t-end", "5"], "--theta0"),
+    (["--h", "0.1", "--state", "theta=0.3,omega9=1", "--t-end", "5"], "omega9"),
+    (["--h", "0.1", "--state", "omega2=1", "--t-end", "5"], "theta"),
+    (["--h", "0.1", "--state", "theta=abc", "--t-end", "5"], "theta"),
+    (["--h", "0.1", "--state", "theta=0.3", "--theta0", "0.3", "--t-end", "5"], "--state"),
+    (["--h", "0.1", "--state", "theta=0.3", "--t-end", "-5"], "t_end"),
+    (["--h", "0.1", "--state", "theta=0.3", "--t-end", "5", "--rtol", "0"], "rtol"),
+    (["--h", "-1", "--state", "theta=0.3", "--t-end", "5"], "h"),
+    (["--h", "0.1", "--state", "theta=0.3", "--t-end", "5", "--out", "/nonexistent/x.csv"],
+     "directory"),
+])
+def test_bad_input_exits_2_with_one_line(capsys, argv, match):
+    assert main(["simulate", *argv]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and match in err
+
+
+# ---------------------------------------------------------------------------- steady starts
+def _has(module: str) -> bool:
+    try:
+        importlib.import_module(module)
+    except ImportError:
+        return False
+    return True
+
+
+needs_steady = pytest.mark.skipif(not (_has("rollingdisk.steady") and _has(
+    "rollingdisk.stability")), reason="steady motions / stability not merged yet")
+
+
+@needs_steady
+def test_perturbed_steady_circle_oscillates_at_varpi(capsys):
+    rec = run_json(capsys, "--h", "0.1", "--theta0", "0.3", "--Omega0", "2", "--perturb",
+                   "1e-7", "--t-end", "200")
+    assert rec["status"] == "completed"
+    assert rec["theta_frequency"] == pytest.approx(rec["varpi"], rel=1e-6)
+
+
+@needs_steady
+def test_straight_line_start(capsys):
+    rec = run_json(capsys, "--h", "0.1", "--motion", "straight", "--omega0", "2", "--perturb",
+                   "1e-7", "--t-end", "100")
+    assert rec["status"] == "completed"
+    assert abs(rec["theta_max"] - math.atan(0.1)) < 1e-5
+
+
+def test_steady_start_without_the_steady_module_says_so(capsys, monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "rollingdisk.steady", None)
+    assert main(["simulate", "--h", "0.1", "--theta0", "0.3", "--Omega0", "2", "--t-end",
+                 "1"]) == 2
+    assert "--state" in capsys.readouterr().err
+
+
+@needs_steady
+def test_unstable_circle_reports_its_growth_rate(capsys):
+    rec = run_json(capsys, "--h", "0.3", "--theta0", "0.3", "--rC", "2", "--perturb", "1e-9",
+                   "--t-end", "60")
+    assert rec["varpi2"] < 0 and rec["varpi"] is None
+    assert rec["growth_rate"] == pytest.approx(math.sqrt(-rec["varpi2"]), rel=1e-3)

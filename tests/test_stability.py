@@ -1,0 +1,263 @@
+"""Stability (section 4): closed forms vs numerical linearization vs direct simulation.
+
+Sources of truth: the Jacobian of the derived reduced equations (38) / (49) (numerical,
+independent of the closed forms) and solve_ivp integrations of ``equations_of_motion`` from
+slightly perturbed steady motions.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy.integrate import solve_ivp
+
+from rollingdisk import Disk, equations_of_motion
+from rollingdisk.stability import (
+    Stability,
+    circle_coefficients,
+    critical_omega30_sq,
+    reduced_jacobian,
+    stability,
+    stable_for_all_omega30,
+    thresholds,
+    varpi2_circle,
+    varpi2_closed_form,
+    varpi2_linearized,
+    varpi2_rough_rC,
+)
+from rollingdisk.steady import r_C_star, steady_motion, straight_line
+
+H = st.floats(0.0, 5.0)
+THETA = st.floats(1e-4, 1.569)  # (0, pi/2); tan(1.569) ~ 560
+SIGN = st.sampled_from([1.0, -1.0])
+
+
+def jac_scale(m) -> float:
+    """Scale of varpi^2's ingredients, so that 'relative' is meaningful near varpi^2 = 0."""
+    J = reduced_jacobian(m.ground, m.h, m.theta0, m.omega20, m.omega30)
+    return float(np.sum(np.abs(J[1, :]) * (1.0 + np.abs(J[:, 1]))))
+
+
+def agree(a: float, b: float, scale: float, rel: float = 1e-8) -> bool:
+    return abs(a - b) <= rel * max(abs(a), abs(b), scale)
+
+
+@settings(max_examples=150, deadline=None)
+@given(h=H, theta0=THETA, lnW=st.floats(-2.5, 2.5), sgn=SIGN, lean=SIGN,
+       ground=st.sampled_from(["rough", "smooth"]))
+def test_closed_forms_agree_with_linearization(h, theta0, lnW, sgn, lean, ground):
+    m = steady_motion(Disk(h=h), ground, lean * theta0, Omega0=sgn * math.exp(lnW))
+    lin = varpi2_linearized(m)
+    closed = stability(m).varpi2  # eq. (40) / (51)
+    circ = float(varpi2_circle(ground, h, m.theta0, m.omega30))  # eq. (45) corrected / (55)
+    s = jac_scale(m)
+    assert agree(lin, closed, s), (lin, closed, s)
+    assert agree(lin, circ, s), (lin, circ, s)
+
+
+@settings(max_examples=80, deadline=None)
+@given(h=H, theta0=THETA, lnr=st.floats(-5.0, 2.0), lean=SIGN)
+def test_rC_route_agrees(h, theta0, lnr, lean):
+    theta0 *= lean
+    ht = h * lean
+    if abs(math.tan(theta0) - ht) < 1e-6:
+        return
+    side = 1.0 if math.tan(theta0) > ht else -1.0
+    r_C = float(r_C_star(h, theta0)) + side * math.exp(lnr)
+    m = steady_motion(Disk(h=h), "rough", theta0, r_C=r_C)
+    v = float(varpi2_rough_rC(h, theta0, r_C))
+    assert agree(v, varpi2_linearized(m), jac_scale(m))
+    # the wrong side of r_C* has no steady motion: NaN
+    assert np.isnan(varpi2_rough_rC(h, theta0, float(r_C_star(h, theta0)) - side * 0.1))
+
+
+@settings(max_examples=60, deadline=None)
+@given(h=H, omega0=st.floats(0.01, 10.0), ground=st.sampled_from(["rough", "smooth"]))
+def test_straight_lines(h, omega0, ground):
+    m = straight_line(Disk(h=h), ground, omega0)
+    lin = varpi2_linearized(m)
+    assert agree(lin, stability(m).varpi2, jac_scale(m))
+    t = thresholds(h)
+    crit = (t.rough_straight_line_omega20_sq if ground == "rough"
+            else t.smooth_straight_line_omega20_sq)  # eqs. (42), (53)
+    if abs(omega0 ** 2 - crit) > 1e-6 * crit:
+        assert (lin > 0) == (omega0 ** 2 > crit)
+
+
+@pytest.mark.parametrize("h", [0.0, 0.3, math.sqrt(3) / 2, 2.0])
+def test_se_thresholds_from_linearization(h):
+    """(43) and (57): at the SE tilt varpi^2 changes sign at the threshold omega30^2."""
+    t = thresholds(h)
+    for ground, crit in (("rough", t.rough_se_circle_omega30_sq),
+                         ("smooth", t.smooth_spin_omega30_sq)):
+        th = math.atan(h)
+        for f, sign in ((1.01, 1), (0.99, -1)):
+            W = math.sqrt(f * crit) / math.cos(th)
+            m = steady_motion(Disk(h=h), ground, th, Omega0=W)
+            assert np.sign(varpi2_linearized(m)) == sign
+        W = math.sqrt(crit) / math.cos(th)
+        m = steady_motion(Disk(h=h), ground, th, Omega0=W)
+        assert abs(varpi2_linearized(m)) < 1e-9 * jac_scale(m)
+
+
+def test_jacobian_structure_two_zero_modes():
+    m = steady_motion(Disk(h=0.4), "rough", 0.7, Omega0=1.3)
+    J = reduced_jacobian("rough", m.h, m.theta0, m.omega20, m.omega30)
+    ev = np.sort_complex(np.linalg.eigvals(J))
+    assert np.linalg.matrix_rank(J, tol=1e-9) == 2
+    small = ev[np.argsort(np.abs(ev))[:2]]
+    assert np.all(np.abs(small) < 1e-6)
+    big = ev[np.argsort(np.abs(ev))[2:]]
+    assert np.allclose(big ** 2, -stability(m).varpi2, rtol=1e-9)
+
+
+def test_stable_for_all_omega30_regions():
+    """Regions (46)/(59) vs a brute-force scan of omega30 with the linearization."""
+    for ground in ("rough", "smooth"):
+        for h in (0.0, 0.5, 2.0):
+            for th in np.linspace(0.05, 1.45, 8):
+                flag = bool(stable_for_all_omega30(ground, h, th))
+                Ws = np.geomspace(0.02, 20, 120)
+                v = varpi2_circle(ground, h, th, Ws)
+                assert flag == bool(np.all(v > 0)) or abs(
+                    np.min(v)) < 1e-6, (ground, h, th)
+                lo, hi = critical_omega30_sq(ground, h, th)
+                if not flag:
+                    w = math.sqrt(0.5 * (lo + hi))
+                    m = steady_motion(Disk(h=h), ground, th, Omega0=w / math.cos(th))
+                    assert varpi2_linearized(m) < 0
+
+
+def test_smooth_region_is_eq59():
+    """Delta < 0 on smooth ground is exactly (59) with h~ (the printed 'h' for theta0 > 0)."""
+    h = np.linspace(0, 3, 31)[:, None]
+    th = np.linspace(0.01, 1.5, 40)[None, :]
+    p = np.tan(th)
+    P0, P1, P2, _ = circle_coefficients("smooth", h, th)
+    delta_neg = P1 ** 2 - 4 * P0 * P2 < 0
+    eq59 = 3 * p ** 4 - 4 * h * p ** 3 + 6 * p ** 2 - 12 * h * p - 1 + 4 * h ** 2 > 0
+    assert np.array_equal(delta_neg, eq59)
+
+
+def test_stability_dataclass():
+    s = Stability.from_varpi2(4.0)
+    assert s.stable and s.varpi == 2.0 and s.period == pytest.approx(math.pi)
+    u = Stability.from_varpi2(-9.0)
+    assert not u.stable and u.period is None and u.growth_rate == 3.0 and math.isnan(u.varpi)
+    assert np.isnan(varpi2_circle("rough", 0.3, 0.5, 0.0))
+    assert varpi2_closed_form("rough", 0.0, 0.2, np.ones(3), np.ones(3)).shape == (3,)
+
+
+# ------------------------------------------------------------------ simulation
+def _simulate(m, dtheta, T, n=4000):
+    """Integrate from the steady state with theta perturbed by ``dtheta``.
+
+    The perturbation is modal: omega2, omega3 get ``a_k dtheta`` (a_k = d omega_k'/d omega1,
+    eq. 39) so that theta oscillates about theta0 itself, not about a neighbouring steady
+    state far away (which would make the amplitude much larger than ``dtheta`` where
+    varpi^2 is small); on unstable motions omega1 gets ``sqrt(-varpi^2) dtheta`` so that the
+    growth is a pure exponential.
+    """
+    disk = Disk(h=m.h)
+    y0 = m.initial_state()
+    it = 3 if m.ground == "rough" else 5
+    J = reduced_jacobian(m.ground, m.h, m.theta0, m.omega20, m.omega30)
+    y0[it] += dtheta
+    y0[it + 3] += J[2, 1] * dtheta
+    y0[it + 4] += J[3, 1] * dtheta
+    v2 = -0.5 * np.trace(J @ J)
+    if v2 < 0:
+        y0[it + 2] += math.sqrt(-v2) * dtheta
+    sol = solve_ivp(equations_of_motion(disk, m.ground), (0, T), y0, method="DOP853",
+                    rtol=1e-12, atol=1e-13, dense_output=True)
+    t = np.linspace(0, T, n)
+    return t, sol.sol(t)[it]
+
+
+STABLE = [
+    ("rough", 0.3, 0.2, 1.7),
+    ("smooth", 2.0, -0.7, 1.7),
+    ("rough", 0.0, 0.0, None),  # straight line, omega0 = 1 > sqrt(1/3)
+]
+UNSTABLE = [
+    ("smooth", 0.0, 0.2, 1.7),
+    ("rough", 0.0, 0.0, 0.3),  # straight line, omega0^2 = 0.09 < 1/3
+    ("rough", 1.0, 0.2, 0.65),  # inside the varpi^2 < 0 band of critical_omega30_sq
+]
+
+
+@pytest.mark.parametrize("ground,h,theta0,W", STABLE)
+def test_stable_motion_oscillates_at_varpi(ground, h, theta0, W):
+    m = (straight_line(Disk(h=h), ground, 1.0) if W is None
+         else steady_motion(Disk(h=h), ground, theta0, Omega0=W))
+    st_ = stability(m)
+    assert st_.stable
+    T = 6 * st_.period
+    t, th = _simulate(m, 1e-5, T, n=6000)
+    x = th - 0.5 * (th.max() + th.min())
+    up = np.nonzero((x[:-1] < 0) & (x[1:] >= 0))[0]
+    tc = t[up] - x[up] * (t[up + 1] - t[up]) / (x[up + 1] - x[up])
+    period = np.mean(np.diff(tc))
+    assert period == pytest.approx(st_.period, rel=1e-5)
+    assert np.max(np.abs(th - m.theta0)) < 1e-4  # stays close
+
+
+@pytest.mark.parametrize("ground,h,theta0,W", UNSTABLE)
+def test_unstable_motion_grows_at_sqrt_minus_varpi2(ground, h, theta0, W):
+    m = (straight_line(Disk(h=h), ground, W) if theta0 == 0.0
+         else steady_motion(Disk(h=h), ground, theta0, Omega0=W))
+    st_ = stability(m)
+    assert not st_.stable
+    lam = st_.growth_rate
+    T = math.log(1e-4 / 1e-9) / lam
+    t, th = _simulate(m, 1e-9, T)
+    d = np.abs(th - m.theta0)
+    sel = (d > 1e-7) & (d < 5e-5)
+    slope = np.polyfit(t[sel], np.log(d[sel]), 1)[0]
+    assert slope == pytest.approx(lam, rel=1e-3)
+
+
+@pytest.mark.parametrize("theta0", [0.002, 1e-3, -0.002, 1e-7])
+def test_linearization_near_theta_zero(theta0):
+    """The theta stencil crosses theta = 0 here; h~ must keep the value of theta0's side."""
+    m = steady_motion(Disk(h=1.0), "rough", theta0, Omega0=1.0)
+    assert agree(varpi2_linearized(m), stability(m).varpi2, jac_scale(m))
+
+
+def test_core_imports_without_sympy_or_matplotlib():
+    import subprocess
+    import sys
+
+    code = ("import sys; sys.modules['sympy'] = None; sys.modules['matplotlib'] = None; "
+            "import rollingdisk.steady, rollingdisk.stability")
+    subprocess.run([sys.executable, "-c", code], check=True,
+                   env={"PYTHONPATH": str(__import__("pathlib").Path(__file__).parents[1] / "src")})
+
+
+@pytest.mark.slow
+@settings(max_examples=150, deadline=None)
+@given(h=st.floats(0.0, 3.0), theta0=st.floats(0.05, 1.3), lnW=st.floats(-1.0, 1.5),
+       lean=SIGN, ground=st.sampled_from(["rough", "smooth"]))
+def test_simulated_frequency_or_growth_matches_varpi2(h, theta0, lnW, lean, ground):
+    """Wide check by simulation: period 2 pi/varpi (stable) or growth sqrt(-varpi^2)."""
+    m = steady_motion(Disk(h=h), ground, lean * theta0, Omega0=math.exp(lnW))
+    s = stability(m)
+    if abs(s.varpi2) < 1e-3 or abs(s.varpi2) > 400:
+        return  # too slow to measure in a short run, or needs a tiny time step
+    if s.stable:
+        t, th = _simulate(m, 1e-6 * max(1.0, math.cos(theta0)), 5 * s.period, n=5000)
+        x = th - 0.5 * (th.max() + th.min())
+        up = np.nonzero((x[:-1] < 0) & (x[1:] >= 0))[0]
+        tc = t[up] - x[up] * (t[up + 1] - t[up]) / (x[up + 1] - x[up])
+        assert np.mean(np.diff(tc)) == pytest.approx(s.period, rel=1e-4)
+    else:
+        lam = s.growth_rate
+        t, th = _simulate(m, 1e-9, math.log(1e-4 / 1e-9) / lam)
+        d = np.abs(th - m.theta0)
+        sel = (d > 1e-7) & (d < 5e-5)
+        slope = np.polyfit(t[sel], np.log(d[sel]), 1)[0]
+        assert slope == pytest.approx(lam, rel=1e-3)
