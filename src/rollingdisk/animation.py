@@ -113,8 +113,14 @@ def _limits(traj, pad: float = 1.3):
 
 
 def draw_disk(ax, pose: DiskPose, *, face_color="#9ecae1", side_color="#4a7fb0",
-              marker_color="tab:red") -> dict:
-    """Draw one :class:`DiskPose` on a 3D axes: two faces, side surface, marker, P."""
+              marker_color="tab:red", shadow: bool = True) -> dict:
+    """Draw one :class:`DiskPose` on a 3D axes: two faces, side surface, body-fixed red
+    sectors (they show ``phi``), the contact point P and the shadow on ``Z = 0``.
+
+    Everything on the plane gets a lower ``zorder`` than the disk; with
+    ``ax.computed_zorder = False`` (as :func:`animate` sets) the disk, which never goes
+    below the plane, is then always painted over them.
+    """
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
     out = {}
@@ -134,10 +140,15 @@ def draw_disk(ax, pose: DiskPose, *, face_color="#9ecae1", side_color="#4a7fb0",
     widths = [0.6, 0.6] + [0.2] * len(quads) + [0.3, 0.3]
     body = Poly3DCollection(polys, facecolors=colors, edgecolors=edges, linewidths=widths,
                             alpha=1.0)
+    if shadow:
+        # the disk's shadow straight below it: helps to read height and tilt
+        flat = [np.column_stack([r[:, 0], r[:, 1], 0.0 * r[:, 0]]) for r in (r0, r1)]
+        out["shadow"] = ax.add_collection3d(Poly3DCollection(
+            flat, facecolor="0.45", edgecolor="none", alpha=0.3, zorder=1))
+    (out["contact"],) = ax.plot(*pose.contact[:, None], "o", color="tab:red", ms=3,
+                                zorder=1.5)
+    body.set_zorder(2)
     out["body"] = ax.add_collection3d(body)
-    (out["marker"],) = ax.plot(*pose.marker.T, color=marker_color, lw=2.0)
-    (out["center"],) = ax.plot(*pose.center[:, None], "o", color="k", ms=2)
-    (out["contact"],) = ax.plot(*pose.contact[:, None], "o", color="tab:red", ms=3)
     return out
 
 
@@ -193,8 +204,10 @@ def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
             # the plane Z = 0 is the bottom pane of the axes (zlim starts at 0)
             ax.zaxis.set_pane_color((0.85, 0.85, 0.85, 1.0))
             k = int(np.searchsorted(t, ti, side="right"))
-            ax.plot(XP[:k], YP[:k], 0.0 * XP[:k], color="tab:red", lw=1.0)
-            ax.plot(XC[:k], YC[:k], 0.0 * XC[:k], color="tab:blue", lw=0.7, ls="--")
+            ax.computed_zorder = False  # plane first, then the disk (see draw_disk)
+            ax.plot(XP[:k], YP[:k], 0.0 * XP[:k], color="tab:red", lw=1.0, zorder=1.2)
+            ax.plot(XC[:k], YC[:k], 0.0 * XC[:k], color="tab:blue", lw=0.7, ls="--",
+                    zorder=1.2)
             draw_disk(ax, pose)
             ax.set_xlim(x0, x1)
             ax.set_ylim(y0, y1)
