@@ -40,7 +40,8 @@ def test_atlas_index_references_only_existing_files(quick_atlas):
     for ref in refs:
         assert "://" not in ref and not ref.startswith("/"), ref  # relative, local
         assert (result.out_dir / ref).is_file(), ref
-    for name in ("existence.png", "stability.png", "all_omega30.png", "motion_stable.png",
+    for name in ("existence.png", "stability.png", "varpi2.png", "all_omega30.png",
+                 "motion_stable.png",
                  "motion_unstable.png", "motion_stable.gif", "motion_unstable.gif"):
         assert name in refs
     assert "<link" not in html and "<script" not in html

@@ -133,6 +133,17 @@ def test_all_omega30_rough_small_region_near_zero_tilt():
     assert 0.05 < np.mean(m.values) < 0.95
 
 
+def test_varpi2_curves_thin_disk_crossing():
+    """h = 0 rough, theta0 -> 0: varpi^2 crosses zero at omega30^2 = 4/5 (eq. 43)."""
+    out = plotting.plot_varpi2_curves(0.0, "rough", theta0s=[1e-6], n=3000)
+    line = out["lines"][1e-6]
+    w, v = line.get_xdata(), line.get_ydata()
+    i = np.flatnonzero((v[:-1] < 0) & (v[1:] >= 0))[-1]
+    assert w[i] == pytest.approx(math.sqrt(0.8), abs=2e-3)
+    assert r"\varpi^2" in out["ax"].get_ylabel()
+    assert r"\omega_{30}" in out["ax"].get_xlabel()
+
+
 # ------------------------------------------------------------------------------ surfaces
 def test_surface_roots_are_zeros_of_varpi2():
     """varpi^2 (the library's closed form) changes sign across each sheet drawn."""

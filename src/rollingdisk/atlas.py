@@ -244,6 +244,12 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
                                     omega30_max=2.0 if ground == "rough" else 2.5)
     fig.tight_layout()
     _save(fig, out / "stability.png", dpi, files)
+    fig = Figure(figsize=(10.0, 3.8))
+    axs = fig.subplots(1, 2)
+    for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
+        plotting.plot_varpi2_curves(h, ground, ax, n=120 if quick else 400)
+    fig.tight_layout()
+    _save(fig, out / "varpi2.png", dpi, files)
     pr.done()
 
     # 4. stable for every omega30 --------------------------------------------------------
@@ -418,6 +424,11 @@ circle is stable whatever h and &theta;<sub>0</sub>: &omega;<sub>30</sub>&sup2; 
 ground, &omega;<sub>30</sub>&sup2; = 4 on smooth ground (the paper's conclusion prints 2, but
 its own eq. (57) at h = 0 needs 4; see <code>docs/figures.md</code>).</p>
 <img src="stability.png" alt="stability maps">
+<p>The same along a few vertical lines of these maps: &varpi;&sup2; against
+&omega;<sub>30</sub>. Where &varpi;&sup2; &gt; 0, &varpi; is the angular frequency of the small
+oscillation of the tilt; where &varpi;&sup2; &lt; 0, &radic;(&minus;&varpi;&sup2;) is the rate at
+which a disturbance grows.</p>
+<img src="varpi2.png" alt="varpi squared against omega30">
 
 <h2>Stable for every &omega;<sub>30</sub></h2>
 <p>White: at this (&theta;<sub>0</sub>, h) the steady circle is stable whatever

@@ -34,6 +34,7 @@ __all__ = [
     "plot_stability_map",
     "plot_all_omega30_stable",
     "plot_varpi2_surface",
+    "plot_varpi2_curves",
     "varpi2_zero_surface",
     "plot_paths",
     "plot_theta",
@@ -444,6 +445,41 @@ def plot_varpi2_surface(ground: str, ax=None, *, n=(80, 80),
     ax.set_title(title if title is not None
                  else f"{ground} ground: surface $\\varpi^2=0$")
     return MapPlot(ax, th, hh, hi, artists)
+
+
+def plot_varpi2_curves(h: float, ground: str, ax=None, *, theta0s=None,
+                       omega30_max: float = 3.0, n: int = 400,
+                       title: str | None = None) -> dict:
+    """``varpi^2`` of steady circles against ``omega30`` for a few tilts ``theta0``.
+
+    ``varpi^2 > 0`` (above the zero line) is stable; ``varpi`` is then the angular
+    frequency of the small oscillation of the tilt, ``sqrt(-varpi^2)`` otherwise the rate
+    at which a disturbance grows (eqs. 45 / 55 as corrected in the library).  By default
+    the tilts are 0.1, the static-equilibrium tilt ``arctan h`` (if ``h > 0``), 0.5 and 1.0
+    rad.  Returns ``{"ax": ax, "lines": {theta0: Line2D}}``.
+    """
+    from .stability import varpi2_circle
+
+    h = check_real("h", h, low=0.0)
+    check_ground(ground)
+    ax = _axes(ax)
+    if theta0s is None:
+        theta0s = [0.1, 0.5, 1.0] + ([math.atan(h)] if h > 0 else [])
+    w = np.linspace(0.0, omega30_max, n + 1)[1:]
+    lines = {}
+    for th in sorted(theta0s):
+        with np.errstate(all="ignore"):
+            v2 = np.asarray(varpi2_circle(ground, h, th, w), float)
+        label = f"$\\theta_0 = {th:.3g}$" + (" (SE)" if h > 0 and th == math.atan(h) else "")
+        (lines[th],) = ax.plot(w, v2, lw=1.2, label=label)
+    ax.axhline(0.0, color="k", lw=0.8)
+    ax.set_ylim(-3.0, 6.0)
+    ax.set_xlim(0.0, omega30_max)
+    ax.set_xlabel(LABELS["omega30"])
+    ax.set_ylabel(LABELS["varpi2"])
+    ax.legend(loc="lower right", fontsize="x-small")
+    ax.set_title(title if title is not None else f"{ground} ground, $h = {h:.4g}$")
+    return {"ax": ax, "lines": lines}
 
 
 # ------------------------------------------------------------------------------ trajectories
