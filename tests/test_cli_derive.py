@@ -10,12 +10,16 @@ from rollingdisk.cli import main
 def test_derive_json(capsys):
     assert main(["derive", "--json"]) == 0
     rows = json.loads(capsys.readouterr().out)
-    assert {r["equation"] for r in rows} >= {"(1)", "(13)", "(37)", "(38)", "(49)"}
+    eqs = {r["equation"] for r in rows}
+    assert eqs >= {"(1)", "(13)", "(37)", "(38)", "(49)", "(33)", "(45)", "(57)"}
     assert all(r["status"] in ("confirmed", "misprint") for r in rows)
+    bad = {r["equation"] for r in rows if r["status"] == "misprint"}
+    assert {"(31) first form", "(33)", "(44)", "(45)", "(48)"} <= bad
+    assert all(r["printed"] and r["correct"] for r in rows if r["status"] == "misprint")
 
 
 def test_derive_table(capsys):
-    assert main(["derive"]) == 0
+    assert main(["derive", "--sections", "2"]) == 0
     out = capsys.readouterr().out
     assert "(38)" in out and "equations checked" in out
 

@@ -111,7 +111,7 @@ def test_velocity_of_C_rough_is_no_slip():
 
 
 def test_paper_table_section_2():
-    rows = check_equations()
+    rows = check_equations(sections="2")
     eqs = [r.equation for r in rows]
     assert eqs == ["(1)", "(2)", "(3)", "(4)", "(5)", "(6)", "(7)", "(8)", "(9)", "(10)",
                    "(11)", "(12)", "(13)", "(37)", "(38)", "(49)"]

@@ -1,14 +1,20 @@
 """The numeric core imports neither sympy nor matplotlib (layout rule of the project)."""
 
+import os
 import subprocess
 import sys
+from pathlib import Path
 
-CORE = ["rollingdisk", "rollingdisk.disk", "rollingdisk.equations"]
+CORE = ["rollingdisk", "rollingdisk.disk", "rollingdisk.equations", "rollingdisk.steady",
+        "rollingdisk.stability", "rollingdisk.simulate"]
+SRC = str(Path(__file__).resolve().parents[1] / "src")
 
 
 def test_core_imports_without_sympy_and_matplotlib():
     code = ("import sys\n"
             "sys.modules['sympy'] = None\nsys.modules['matplotlib'] = None\n"
-            + "".join(f"import {m}\n" for m in CORE))
-    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+            + "".join(f"import {m}\n" for m in CORE)
+            + "assert 'numba' not in sys.modules, 'import rollingdisk must not load numba'\n")
+    env = dict(os.environ, PYTHONPATH=SRC)  # this checkout, whatever is installed
+    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)
     assert res.returncode == 0, res.stderr

@@ -1,7 +1,7 @@
 """Every number quoted in sections 3-4 of the paper, next to the value the library computes.
 
 Each row: (what, library value, paper value, tolerance).  Where the paper is wrong the test
-asserts the correct value and says so in a comment (see docs/errata-sections-3-4.md).
+asserts the correct value and says so in a comment (see docs/errata.md).
 The library values come from the corrected closed forms, which tests/test_stability.py
 checks against a numerical linearization of the derived equations and against simulation.
 """

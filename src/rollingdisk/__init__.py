@@ -21,9 +21,9 @@ from .equations import (
     state_names,
     velocity_of_C,
 )
-
-# simulation (issue 4)
 from .simulate import Trajectory, simulate, simulate_steady
+from .stability import Stability, Thresholds, stability, thresholds, varpi2_linearized
+from .steady import NoSteadyMotion, SteadyMotion, steady_motion, straight_line
 
 __version__ = "0.1.0"
 
@@ -40,7 +40,15 @@ __all__ = [
     "state_index",
     "state_names",
     "velocity_of_C",
-    # simulation (issue 4)
+    "NoSteadyMotion",
+    "SteadyMotion",
+    "steady_motion",
+    "straight_line",
+    "Stability",
+    "Thresholds",
+    "stability",
+    "thresholds",
+    "varpi2_linearized",
     "Trajectory",
     "simulate",
     "simulate_steady",

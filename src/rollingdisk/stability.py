@@ -11,7 +11,7 @@ the motion is stable when ``varpi^2 > 0``.  ``varpi^2`` is computed two independ
 
 All closed forms were re-derived with sympy (:mod:`rollingdisk.symbolic.sections34`).  The
 paper's ``P0`` of eq. (45) lacks a factor ``sqrt(1 + p0^2)`` and its eq. (44) has
-``3 + 4h^2`` for ``3 + 16h^2``; this module uses the derived forms (docs/errata-sections-3-4.md).
+``3 + 4h^2`` for ``3 + 16h^2``; this module uses the derived forms (docs/errata.md).
 """
 
 from __future__ import annotations

@@ -21,7 +21,7 @@ the same ``omega20``) is checked in the tests.
 The formulas here were re-derived with sympy from the reduced equations (see
 :mod:`rollingdisk.symbolic.sections34`).  The paper's first form of eq. (31) and eq. (33)
 are misprinted (a factor 2 on the ``h~`` term of the denominator); this module uses the
-derived forms, see ``docs/errata-sections-3-4.md``.
+derived forms, see ``docs/errata.md``.
 """
 
 from __future__ import annotations

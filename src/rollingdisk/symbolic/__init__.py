@@ -5,6 +5,8 @@ Outside the numeric core: nothing in the core imports this package.
 - :mod:`.derivation`: Newton-Euler from first principles (frames, inertia, contact point,
   balances, reduced systems on rough and smooth ground).
 - :mod:`.paper`: the printed equations of section 2, (37), (38), (49), compared with it.
+- :mod:`.sections34`: sections 3-4 (steady motions, stability) re-derived from it, every
+  printed equation (15)-(59) and quoted number compared.
 """
 
 from __future__ import annotations
@@ -18,32 +20,50 @@ __all__ = ["Derivation", "EquationCheck", "check_equations", "derive", "format_t
            "lambdified"]
 
 
-def check_equations(progress: bool = False) -> list[EquationCheck]:
+def check_equations(progress: bool = False, sections: str = "all") -> list[EquationCheck]:
     """Derive the equations and check every printed equation against the derivation.
 
     Parameters
     ----------
     progress : bool
-        Print what is being done to stderr (the derivation takes several seconds).
+        Print what is being done to stderr (the whole check takes about half a minute).
+    sections : {"all", "2"}
+        ``"2"``: eqs. (1)-(13), (37), (38), (49) only; ``"all"`` adds sections 3-4.
     """
+    if sections not in ("all", "2"):
+        raise ValueError(f"sections must be 'all' or '2', got {sections!r}")
     if progress:
         print("deriving the equations of motion (Newton-Euler, sympy) ...", file=sys.stderr)
     derive()
     if progress:
         print("checking eqs. (1)-(13), (37), (38), (49) ...", file=sys.stderr)
-    return list(checks_sections_1_2())
+    rows = list(checks_sections_1_2())
+    if sections == "all":
+        from .sections34 import checks_sections_3_4
+
+        if progress:
+            print("checking sections 3-4: eqs. (15)-(59) and the quoted numbers ...",
+                  file=sys.stderr)
+        rows += [EquationCheck(r["equation"], "", r["status"], r["evidence"],
+                               r["printed"] if r["status"] != "confirmed" else "",
+                               r["correct"] if r["status"] != "confirmed" else "")
+                 for r in checks_sections_3_4()]
+    return rows
 
 
 def format_table(rows: list[EquationCheck]) -> str:
     """A plain-text table of the checks, one row per equation."""
-    head = f"{'eq.':<6} {'status':<10} {'quantity':<52} evidence"
-    lines = [head, "-" * len(head)]
+    width = max(len(r.equation) for r in rows)
+    head = f"{'eq.':<{width}} {'status':<10} what / evidence"
+    lines = [head, "-" * 100]
     for r in rows:
-        lines.append(f"{r.equation:<6} {r.status:<10} {r.quantity:<52} {r.evidence}")
+        text = f"{r.quantity}: {r.evidence}" if r.quantity else r.evidence
+        text = text if len(text) <= 110 else text[:107] + "..."
+        lines.append(f"{r.equation:<{width}} {r.status:<10} {text}")
         if r.status != "confirmed":
-            lines.append(f"{'':<17}printed: {r.printed}")
-            lines.append(f"{'':<17}correct: {r.correct}")
+            lines.append(f"{'':<{width + 12}}printed: {r.printed}")
+            lines.append(f"{'':<{width + 12}}correct: {r.correct}")
     n_bad = sum(r.status != "confirmed" for r in rows)
     lines.append(f"{len(rows)} equations checked: {len(rows) - n_bad} confirmed, "
-                 f"{n_bad} misprinted")
+                 f"{n_bad} misprinted (details and evidence: docs/errata.md)")
     return "\n".join(lines)
