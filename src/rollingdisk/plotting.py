@@ -223,7 +223,7 @@ def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200)
         present = (NO_MOTION, UNSTABLE, STABLE)
     else:
         (artists["line"],) = ax.plot(th, 0.0 * th, color="tab:green", lw=2.5,
-                                     label=r"spin, $r_C=0$ (any $\Omega_0$)")
+                                     label=r"C at rest, $r_C=0$ (any $\Omega_0$)")
         present = (NO_MOTION,)
     if h > 0:
         artists["se"] = ax.axvline(math.atan(h), color="tab:blue", ls="--", lw=1.0,
@@ -243,7 +243,8 @@ def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200)
                                    if r_C_scale == "symlog" else ""))
     ax.set_title(title if title is not None else f"{ground} ground, $h = {h:.4g}$")
     if legend:
-        labels = {} if ground == "rough" else {NO_MOTION: "no steady motion (C is at rest)"}
+        labels = ({} if ground == "rough"
+                  else {NO_MOTION: "no steady motion (no friction: C cannot circle)"})
         leg1 = _class_legend(ax, present, labels, loc="lower left", fontsize="x-small",
                              framealpha=0.9)
         ax.add_artist(leg1)
