@@ -155,3 +155,12 @@ def test_trajectory_summary_and_smooth_forces():
     out = plot_trajectory(traj, theta0=0.35, title="x")
     assert out["axes"].shape == (2, 2)
     assert np.allclose(out["forces"]["F_x"].get_ydata(), 0.0)  # no friction
+
+
+def test_mp4_needs_ffmpeg(tmp_path):
+    import shutil
+
+    if shutil.which("ffmpeg") is not None:
+        pytest.skip("ffmpeg is installed here: .mp4 works")
+    with pytest.raises(ValueError, match="ffmpeg"):
+        animate(_trajectory(n=10), tmp_path / "m.mp4", n_frames=2)
