@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import csv
-import importlib
 import io
 import json
 import math
@@ -123,19 +122,6 @@ def test_bad_input_exits_2_with_one_line(capsys, argv, match):
 
 
 # ---------------------------------------------------------------------------- steady starts
-def _has(module: str) -> bool:
-    try:
-        importlib.import_module(module)
-    except ImportError:
-        return False
-    return True
-
-
-needs_steady = pytest.mark.skipif(not (_has("rollingdisk.steady") and _has(
-    "rollingdisk.stability")), reason="steady motions / stability not merged yet")
-
-
-@needs_steady
 def test_perturbed_steady_circle_oscillates_at_varpi(capsys):
     rec = run_json(capsys, "--h", "0.1", "--theta0", "0.3", "--Omega0", "2", "--perturb",
                    "1e-7", "--t-end", "200")
@@ -143,7 +129,6 @@ def test_perturbed_steady_circle_oscillates_at_varpi(capsys):
     assert rec["theta_frequency"] == pytest.approx(rec["varpi"], rel=1e-6)
 
 
-@needs_steady
 def test_straight_line_start(capsys):
     rec = run_json(capsys, "--h", "0.1", "--motion", "straight", "--omega0", "2", "--perturb",
                    "1e-7", "--t-end", "100")
@@ -151,16 +136,6 @@ def test_straight_line_start(capsys):
     assert abs(rec["theta_max"] - math.atan(0.1)) < 1e-5
 
 
-def test_steady_start_without_the_steady_module_says_so(capsys, monkeypatch):
-    import sys
-
-    monkeypatch.setitem(sys.modules, "rollingdisk.steady", None)
-    assert main(["simulate", "--h", "0.1", "--theta0", "0.3", "--Omega0", "2", "--t-end",
-                 "1"]) == 2
-    assert "--state" in capsys.readouterr().err
-
-
-@needs_steady
 def test_unstable_circle_reports_its_growth_rate(capsys):
     rec = run_json(capsys, "--h", "0.3", "--theta0", "0.3", "--rC", "2", "--perturb", "1e-9",
                    "--t-end", "60")

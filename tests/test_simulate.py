@@ -453,20 +453,6 @@ def test_event_output_is_the_same_with_and_without_progress_chunks(t_eval):
 
 
 # ---------------------------------------------------------------------------- steady module
-def _has(module: str) -> bool:
-    import importlib
-
-    try:
-        importlib.import_module(module)
-    except ImportError:
-        return False
-    return True
-
-
-needs_steady = pytest.mark.skipif(
-    not (_has("rollingdisk.steady") and _has("rollingdisk.stability")),
-    reason="rollingdisk.steady / stability not merged yet")
-
 # (ground, h, theta0, kind, value): circles given Omega0 or r_C, straight lines given omega0
 STEADY_ROWS = [
     ("rough", 0.1, 0.3, "Omega0", 2.0), ("rough", 0.5, 1.0, "Omega0", -3.0),
@@ -479,7 +465,6 @@ STEADY_ROWS = [
 ]
 
 
-@needs_steady
 @pytest.mark.parametrize("row", STEADY_ROWS, ids=str)
 def test_simulation_confirms_the_stability_module(row):
     """Closed-form varpi^2 of rollingdisk.stability vs the simulated motion (both ways)."""

@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .disk import Disk, check_ground, check_real
+from .disk import Disk, check_real
 
 __all__ = ["AtlasResult", "build_atlas", "choose_motions", "steady_trajectory",
            "DEFAULT_H"]
@@ -109,25 +109,15 @@ def steady_trajectory(h: float, ground: str, theta0: float, *, Omega0: float | N
 
     Returns ``(motion, stability, trajectory)``.
     """
-    from .equations import state_index
-    from .simulate import simulate
+    from .simulate import simulate_steady
     from .stability import stability
     from .steady import steady_motion
 
-    h = check_real("h", h, low=0.0)
-    check_ground(ground)
+    motion = steady_motion(Disk(h), ground, theta0, Omega0=Omega0, r_C=r_C, r_P=r_P)
     t_end = check_real("t_end", t_end, low=0.0, low_open=True)
-    perturb = check_real("perturb", perturb)
-    kick = check_real("kick", kick)
-    disk = Disk(h)
-    motion = steady_motion(disk, ground, theta0, Omega0=Omega0, r_C=r_C, r_P=r_P)
-    stab = stability(motion)
-    y0 = np.array(motion.initial_state(), dtype=float)
-    y0[state_index(ground, "theta")] += perturb
-    y0[state_index(ground, "omega1")] += kick
-    traj = simulate(disk, ground, y0, (0.0, t_end),
-                    t_eval=np.linspace(0.0, t_end, max(2, int(n_out))))
-    return motion, stab, traj
+    traj = simulate_steady(motion, t_end, perturb=perturb, kick=kick,
+                           t_eval=np.linspace(0.0, t_end, max(2, int(n_out))))
+    return motion, stability(motion), traj
 
 
 def choose_motions(h: float) -> dict:

@@ -64,6 +64,63 @@ def _run_derive(args) -> int:
     return 0
 
 
+# ---------------------------------------------------------------------------- steady motions
+def _add_motion_args(p, *, h_default: float | None = None):
+    """The arguments that name a steady motion (shared by steady, simulate, animate).
+
+    Returns the mutually exclusive group of the free parameter, for commands that add an
+    alternative to it (``simulate --state``).
+    """
+    p.add_argument("--ground", choices=("rough", "smooth"), default="rough",
+                   help="rough (no slip, default) or smooth (no friction)")
+    if h_default is None:
+        p.add_argument("--h", type=float, required=True, help="half-thickness / radius, h >= 0")
+    else:
+        p.add_argument("--h", type=float, default=h_default,
+                       help=f"half-thickness / radius, h >= 0 (default {h_default:g})")
+    p.add_argument("--theta0", type=parse_angle,
+                   help="steady inclination (radians, or e.g. 30deg; negative: --theta0=-30deg)")
+    p.add_argument("--motion", choices=("circle", "straight"), default=None,
+                   help="circle (spin in place included) or straight; default from the options")
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("--Omega0", type=float, help="spin rate d psi/dt of a steady circle")
+    g.add_argument("--rC", type=float, help="signed radius of the circle of the centre C")
+    g.add_argument("--rP", type=float, help="signed radius of the circle of the contact point")
+    g.add_argument("--omega0", type=float, help="rolling rate d phi/dt of a straight line")
+    return g
+
+
+def _motion_from_args(args, command: str):
+    """The steady motion the arguments of :func:`_add_motion_args` ask for (section 3)."""
+    from .disk import Disk
+    from .steady import steady_motion, straight_line
+
+    disk = Disk(h=args.h)
+    straight = args.motion == "straight" or (args.motion is None and args.omega0 is not None)
+    if straight:
+        if args.omega0 is None:
+            raise CLIError(f"rollingdisk {command}: --motion straight needs --omega0")
+        lean = -1 if args.theta0 is not None and args.theta0 < 0 else 1
+        motion = straight_line(disk, args.ground, args.omega0, lean=lean)
+        if args.theta0 is not None and abs(args.theta0 - motion.theta0) > 1e-9:
+            raise CLIError(
+                f"rollingdisk {command}: a straight line is steady only at theta0 = "
+                f"arctan(h) = {abs(motion.theta0):.6g} rad "
+                f"({math.degrees(abs(motion.theta0)):.4g}deg), not {args.theta0:.6g}")
+        return motion
+    if args.omega0 is not None:
+        raise CLIError(f"rollingdisk {command}: --omega0 is for --motion straight; "
+                       "circles take --Omega0, --rC or --rP")
+    if args.theta0 is None:
+        raise CLIError(f"rollingdisk {command}: give --theta0 (e.g. 30deg) with one of "
+                       "--Omega0, --rC, --rP, or --motion straight --omega0 W")
+    if args.Omega0 is None and args.rC is None and args.rP is None:
+        raise CLIError(f"rollingdisk {command}: give one of --Omega0, --rC, --rP "
+                       "(or --motion straight --omega0 W)")
+    return steady_motion(disk, args.ground, args.theta0, Omega0=args.Omega0, r_C=args.rC,
+                         r_P=args.rP)
+
+
 # ---------------------------------------------------------------------------- steady
 def _add_steady(sub) -> None:
     """``rollingdisk steady``: one steady motion and its stability (sections 3, 4)."""
@@ -72,17 +129,7 @@ def _add_steady(sub) -> None:
         description="Steady motion of the disk (paper sections 3-4): give --theta0 and one of "
         "--Omega0, --rC, --rP for a circle, or --motion straight --omega0 W. Angles in "
         "radians or with a deg suffix; write negative angles as --theta0=-30deg.")
-    p.add_argument("--ground", choices=("rough", "smooth"), default="rough",
-                   help="rough (no slip, default) or smooth (no friction)")
-    p.add_argument("--h", type=float, required=True, help="half-thickness / radius, h >= 0")
-    p.add_argument("--theta0", type=parse_angle, help="inclination (radians, or e.g. 30deg)")
-    p.add_argument("--motion", choices=("circle", "straight"), default=None,
-                   help="circle (with spin in place) or straight; default from the options")
-    g = p.add_mutually_exclusive_group()
-    g.add_argument("--Omega0", type=float, help="spin rate d psi/dt of a circle")
-    g.add_argument("--rC", type=float, help="signed radius of the circle of the centre C")
-    g.add_argument("--rP", type=float, help="signed radius of the circle of the contact point")
-    g.add_argument("--omega0", type=float, help="rolling rate of a straight line")
+    _add_motion_args(p)
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_run_steady)
 
@@ -97,34 +144,9 @@ def _steady_record(motion, stab) -> dict:
 
 
 def _run_steady(args) -> int:
-    from .disk import Disk
     from .stability import stability
-    from .steady import steady_motion, straight_line
 
-    disk = Disk(h=args.h)
-    straight = args.motion == "straight" or (args.motion is None and args.omega0 is not None)
-    if straight:
-        if args.omega0 is None:
-            raise CLIError("rollingdisk steady: --motion straight needs --omega0")
-        motion = straight_line(disk, args.ground, args.omega0)
-        if args.theta0 is not None and abs(abs(args.theta0) - motion.theta0) > 1e-9:
-            raise CLIError(
-                f"rollingdisk steady: a straight line is steady only at theta0 = arctan(h) = "
-                f"{motion.theta0:.6g} rad ({math.degrees(motion.theta0):.4g}deg), "
-                f"not {args.theta0:.6g}")
-        if args.theta0 is not None and args.theta0 < 0:
-            motion = straight_line(disk, args.ground, args.omega0, lean=-1)
-    else:
-        if args.omega0 is not None:
-            raise CLIError("rollingdisk steady: --omega0 is for --motion straight; "
-                           "circles take --Omega0, --rC or --rP")
-        if args.theta0 is None:
-            raise CLIError("rollingdisk steady: give --theta0 (e.g. 30deg) for a circle")
-        if args.Omega0 is None and args.rC is None and args.rP is None:
-            raise CLIError("rollingdisk steady: give one of --Omega0, --rC, --rP "
-                           "(or --motion straight --omega0 W)")
-        motion = steady_motion(disk, args.ground, args.theta0, Omega0=args.Omega0,
-                               r_C=args.rC, r_P=args.rP)
+    motion = _motion_from_args(args, "steady")
     rec = _steady_record(motion, stability(motion))
     if args.json:
         import json
@@ -193,22 +215,14 @@ def _add_simulate(sub) -> None:
         "--motion straight --omega0 W), optionally perturbed (--perturb adds to theta), "
         "or from any state (--state theta=0.3,omega2=1.5,omega3=0.7; unnamed components "
         "are 0). Write negative angles as --theta0=-30deg.")
-    p.add_argument("--ground", choices=("rough", "smooth"), default="rough",
-                   help="rough (no slip, default) or smooth (no friction)")
-    p.add_argument("--h", type=float, required=True, help="half-thickness / radius, h >= 0")
-    p.add_argument("--theta0", type=parse_angle, help="steady inclination (radians or 30deg)")
-    p.add_argument("--motion", choices=("circle", "straight"), default=None,
-                   help="steady motion kind; default from the options")
-    g = p.add_mutually_exclusive_group()
-    g.add_argument("--Omega0", type=float, help="spin rate d psi/dt of a steady circle")
-    g.add_argument("--rC", type=float, help="signed radius of the circle of C")
-    g.add_argument("--rP", type=float, help="signed radius of the circle of P")
-    g.add_argument("--omega0", type=float, help="rolling rate of a steady straight line")
+    g = _add_motion_args(p)
     g.add_argument("--state", type=str, metavar="NAME=VALUE,...",
                    help="an arbitrary initial state by component names (X_C, Y_C, [V_X, "
                    "V_Y,] psi, theta, phi, omega1, omega2, omega3; angles may have a deg "
                    "suffix); unnamed components are 0")
     p.add_argument("--perturb", type=float, default=0.0, help="added to theta(0) (default 0)")
+    p.add_argument("--kick", type=float, default=0.0,
+                   help="added to omega1(0) = d theta/dt (default 0)")
     p.add_argument("--t-end", dest="t_end", type=float, required=True,
                    help="end time (units sqrt(a/g))")
     p.add_argument("--rtol", type=float, default=None, help="relative tolerance")
@@ -247,52 +261,14 @@ def _parse_state(text: str, ground: str) -> list[float]:
     return [values[n] for n in names]
 
 
-def _simulate_motion(args, disk):
+def _simulate_motion(args):
     """The steady motion asked for, or None with --state."""
-    if args.state is not None:
-        if args.theta0 is not None or args.motion is not None:
-            raise CLIError("rollingdisk simulate: --state gives the whole initial state; "
-                           "leave out --theta0 and --motion")
-        return None
-    straight = args.motion == "straight" or (args.motion is None and args.omega0 is not None)
-    if straight and args.omega0 is None:
-        raise CLIError("rollingdisk simulate: --motion straight needs --omega0")
-    if not straight:
-        if args.omega0 is not None:
-            raise CLIError("rollingdisk simulate: --omega0 is for --motion straight; circles "
-                           "take --Omega0, --rC or --rP")
-        if args.theta0 is None:
-            raise CLIError("rollingdisk simulate: give --theta0 with one of --Omega0, --rC, "
-                           "--rP, or --motion straight --omega0 W, or an initial --state")
-        if args.Omega0 is None and args.rC is None and args.rP is None:
-            raise CLIError("rollingdisk simulate: give one of --Omega0, --rC, --rP with "
-                           "--theta0")
-    try:
-        from .steady import steady_motion, straight_line
-    except ImportError:  # the steady-motion module is not in this build
-        raise CLIError("rollingdisk simulate: steady motions need rollingdisk.steady, "
-                       "which this build lacks; give the initial state with --state") from None
-    if straight:
-        motion = straight_line(disk, args.ground, args.omega0)
-        if args.theta0 is not None and abs(abs(args.theta0) - motion.theta0) > 1e-9:
-            raise CLIError(
-                f"rollingdisk simulate: a straight line is steady only at theta0 = "
-                f"arctan(h) = {motion.theta0:.6g} rad, not {args.theta0:.6g}")
-        if args.theta0 is not None and args.theta0 < 0:
-            motion = straight_line(disk, args.ground, args.omega0, lean=-1)
-        return motion
-    return steady_motion(disk, args.ground, args.theta0, Omega0=args.Omega0, r_C=args.rC,
-                         r_P=args.rP)
-
-
-def _predicted_varpi2(motion):
-    if motion is None:
-        return None
-    try:
-        from .stability import stability
-    except ImportError:  # the stability module is not in this build
-        return None
-    return float(stability(motion).varpi2)
+    if args.state is None:
+        return _motion_from_args(args, "simulate")
+    if args.theta0 is not None or args.motion is not None:
+        raise CLIError("rollingdisk simulate: --state gives the whole initial state; "
+                       "leave out --theta0 and --motion")
+    return None
 
 
 class _ProgressBar:
@@ -360,9 +336,10 @@ def _run_simulate(args) -> int:
         simulate,
         simulate_steady,
     )
+    from .stability import stability
 
     disk = Disk(h=args.h)
-    motion = _simulate_motion(args, disk)
+    motion = _simulate_motion(args)
     if args.out is not None:
         import os
 
@@ -378,19 +355,21 @@ def _run_simulate(args) -> int:
         options["progress"] = bar
     try:
         if motion is not None:
-            traj = simulate_steady(motion, args.t_end, perturb=args.perturb, **options)
+            traj = simulate_steady(motion, args.t_end, perturb=args.perturb, kick=args.kick,
+                                   **options)
         else:
             y0 = _parse_state(args.state, args.ground)
             from .equations import state_index
 
             y0[state_index(args.ground, "theta")] += args.perturb
+            y0[state_index(args.ground, "omega1")] += args.kick
             if not (math.isfinite(args.t_end) and args.t_end > 0):
                 raise ValueError(f"t_end must be a finite number > 0, got {args.t_end!r}")
             traj = simulate(disk, args.ground, y0, (0.0, args.t_end), **options)
     finally:
         if bar is not None:
             bar.close()
-    varpi2 = _predicted_varpi2(motion)
+    varpi2 = None if motion is None else float(stability(motion).varpi2)
     freq = oscillation_frequency(traj)
     # the linear regime of an unstable start: up to 1e3 times the perturbation (>= 1e-4;
     # the nonlinear bias is about max_amplitude, relatively)
@@ -436,7 +415,7 @@ def _run_simulate(args) -> int:
 
 # ---------------------------------------------------------------------------- figures, maps
 def _add_figures(sub) -> None:
-    """Registered by the figures issue (figures, map, animate, atlas)."""
+    """``figures``, ``map``, ``animate``, ``atlas``: the pictures (edges over the core)."""
     p = sub.add_parser("figures", help="recompute the paper's Figures 4-8 as PNG files")
     p.add_argument("--out", required=True, help="output folder")
     p.add_argument("--scale", type=float, default=1.0,
@@ -460,14 +439,7 @@ def _add_figures(sub) -> None:
 
     p = sub.add_parser("animate", help="simulate a steady motion from a small tilt "
                        "perturbation and write a 3D animation (.gif, or .mp4 with ffmpeg)")
-    p.add_argument("--ground", default="rough", choices=("rough", "smooth"))
-    p.add_argument("--h", type=float, default=0.17, help="half-thickness (default 0.17)")
-    p.add_argument("--theta0", type=parse_angle, required=True,
-                   help="steady tilt, radians or e.g. 30deg")
-    g = p.add_mutually_exclusive_group(required=True)
-    g.add_argument("--Omega0", type=float, help="spin rate about the vertical")
-    g.add_argument("--r-C", dest="r_C", type=float, help="signed radius of C's circle")
-    g.add_argument("--r-P", dest="r_P", type=float, help="signed radius of P's circle")
+    _add_motion_args(p, h_default=0.17)
     p.add_argument("--perturb", type=float, default=0.0, help="added to theta(0)")
     p.add_argument("--kick", type=float, default=0.01, help="added to omega1(0) = dtheta/dt")
     p.add_argument("--t-end", type=float, default=20.0, help="simulated time")
@@ -524,13 +496,17 @@ def _run_map(args) -> int:
 
 def _run_animate(args) -> int:
     _agg()
+    import numpy as np
+
     from .animation import animate, writer_for
-    from .atlas import steady_trajectory
+    from .simulate import simulate_steady
+    from .stability import stability
 
     writer_for(args.out, args.fps)  # a bad file name fails before the simulation
-    motion, stab, traj = steady_trajectory(
-        args.h, args.ground, args.theta0, Omega0=args.Omega0, r_C=args.r_C, r_P=args.r_P,
-        perturb=args.perturb, kick=args.kick, t_end=args.t_end)
+    motion = _motion_from_args(args, "animate")
+    stab = stability(motion)
+    traj = simulate_steady(motion, args.t_end, perturb=args.perturb, kick=args.kick,
+                           t_eval=np.linspace(0.0, args.t_end, 1200))
     verdict = (f"stable, varpi^2 = {stab.varpi2:.4g}" if stab.stable
                else f"unstable, varpi^2 = {stab.varpi2:.4g}")
     print(f"{args.ground} ground, h = {args.h:g}, theta0 = {motion.theta0:.4g}, "

@@ -554,9 +554,9 @@ def _simulate_scipy(disk, ground, y, t0, t1, rtol, atol, max_step, first_step, t
                       wall_time=wall, t_events=t_events, y_events=y_events)
 
 
-def simulate_steady(motion, t_end: float, *, perturb: float = 0.0, psi0: float = 0.0,
-                    phi0: float = 0.0, **options) -> Trajectory:
-    """Simulate from a steady motion, optionally with ``theta(0)`` perturbed.
+def simulate_steady(motion, t_end: float, *, perturb: float = 0.0, kick: float = 0.0,
+                    psi0: float = 0.0, phi0: float = 0.0, **options) -> Trajectory:
+    """Simulate from a steady motion, optionally with ``theta(0)`` or ``omega1(0)`` perturbed.
 
     Parameters
     ----------
@@ -568,7 +568,10 @@ def simulate_steady(motion, t_end: float, *, perturb: float = 0.0, psi0: float =
         End time, ``> 0`` (the run starts at ``t = 0``).
     perturb : float
         Added to ``theta(0)``; all else stays at its steady value (eq. 36 with
-        ``theta~(0) = perturb``, ``omega~_i(0) = 0``).
+        ``theta~(0) = perturb``, ``omega~_i(0) = 0``).  The linearized eq. (39) then has a
+        constant right-hand side: the disk oscillates about a neighbouring steady motion.
+    kick : float
+        Added to ``omega1(0) = d theta/dt``: the oscillation stays centred on ``theta0``.
     psi0, phi0 : float
         Initial spin and rotation angles.
     **options
@@ -584,9 +587,11 @@ def simulate_steady(motion, t_end: float, *, perturb: float = 0.0, psi0: float =
             raise ValueError(f"motion must be a SteadyMotion (it has no {name!r})")
     t_end = check_real("t_end", t_end, low=0.0, low_open=True)
     perturb = check_real("perturb", perturb)
+    kick = check_real("kick", kick)
     disk = Disk(h=float(motion.h))
     y0 = np.array(motion.initial_state(psi0, phi0), dtype=float)
     y0[state_index(motion.ground, "theta")] += perturb
+    y0[state_index(motion.ground, "omega1")] += kick
     tr = simulate(disk, motion.ground, y0, (0.0, t_end), **options)
     object.__setattr__(tr, "theta_ref", float(motion.theta0))
     object.__setattr__(tr, "motion", motion)
