@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-__all__ = ["Disk", "GROUNDS", "check_ground", "check_real"]
+__all__ = ["Disk", "GROUNDS", "check_ground", "check_real", "h_tilde"]
 
 #: The two kinds of ground the theory covers: no slip, or no friction.
 GROUNDS = ("rough", "smooth")
@@ -54,6 +54,11 @@ def _is_numpy_real(value) -> bool:
     return isinstance(value, (np.integer, np.floating)) or (
         isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf"
     )
+
+
+def h_tilde(h: float, theta: float) -> float:
+    """``h~ = h sgn(theta)``: which rim edge touches the plane (eq. 4); 0 at ``theta = 0``."""
+    return h if theta > 0 else -h if theta < 0 else 0.0
 
 
 def check_ground(ground) -> str:
@@ -126,7 +131,7 @@ class Disk:
     # -- contact geometry, eq. (4) -----------------------------------------------------
     def h_tilde(self, theta: float) -> float:
         """``h~ = h sgn(theta)``: the rim edge that touches the plane (eq. 4)."""
-        return self.h * math.copysign(1.0, theta) if theta != 0.0 else 0.0
+        return h_tilde(self.h, theta)
 
     def contact_point(self, theta: float) -> tuple[float, float]:
         """Contact point P in the frame Cxyz, ``(y_P, z_P)`` (eq. 4), in units of ``a``."""

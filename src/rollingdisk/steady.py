@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .disk import Disk, check_ground, check_real
+from .disk import Disk, check_ground, check_real, h_tilde
 
 __all__ = [
     "NoSteadyMotion",
@@ -116,7 +116,7 @@ class SteadyMotion:
     @property
     def h_tilde(self) -> float:
         """``h~ = h sgn(theta0)`` (eq. 4)."""
-        return _h_tilde(self.h, self.theta0)
+        return h_tilde(self.h, self.theta0)
 
     def initial_state(self, psi0: float = 0.0, phi0: float = 0.0) -> np.ndarray:
         """State vector (layout of :mod:`rollingdisk.equations`) on this steady motion at t=0.
@@ -153,10 +153,6 @@ class SteadyMotion:
 
 
 # ---------------------------------------------------------------------------------------
-def _h_tilde(h: float, theta: float) -> float:
-    return h * (1.0 if theta > 0 else -1.0 if theta < 0 else 0.0)
-
-
 def _check_theta0(disk: Disk, theta0) -> float:
     theta0 = check_real("theta0", theta0, low=-math.pi / 2, high=math.pi / 2,
                         low_open=True, high_open=True)
@@ -174,7 +170,7 @@ def se_circle_radius(h: float, theta0: float = 1.0) -> float:
     ``h~ (3 - 4h^2) / (6 (3 + 2h^2) sqrt(1 + h^2))`` with ``h~ = h sgn(theta0)``: positive
     (leaning towards A) for ``h < sqrt(3)/2``, negative for ``h > sqrt(3)/2``.
     """
-    ht = _h_tilde(h, theta0)
+    ht = h_tilde(h, theta0)
     return ht * (3.0 - 4.0 * h * h) / (6.0 * (3.0 + 2.0 * h * h) * math.sqrt(1.0 + h * h))
 
 
@@ -196,7 +192,7 @@ def _describe_r_range(name: str, lo: float | None, hi: float | None) -> str:
 def _build(disk: Disk, ground: str, theta0: float, Omega0: float) -> SteadyMotion:
     """The circle/spin of ``disk`` at ``theta0`` turning at ``Omega0 != 0``."""
     h = disk.h
-    ht = _h_tilde(h, theta0)
+    ht = h_tilde(h, theta0)
     s, c = math.sin(theta0), math.cos(theta0)
     p = s / c
     y_P = s - ht * c  # eq. (16)
@@ -286,7 +282,7 @@ def steady_motion(disk: Disk, ground: str, theta0: float, *, Omega0: float | Non
     name, value = given[0]
     value = check_real(name, value)
     h = disk.h
-    ht = _h_tilde(h, theta0)
+    ht = h_tilde(h, theta0)
     s, c = math.sin(theta0), math.cos(theta0)
     p = s / c
     y_P = s - ht * c
