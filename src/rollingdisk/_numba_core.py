@@ -3,8 +3,8 @@
 The right-hand sides are the very kernels of :mod:`rollingdisk.equations` (eqs. 1, 2, 37,
 38 on rough, 2, 8, 49 on smooth ground), compiled from their own source: each kernel's code
 object is re-bound to a namespace in which the kernels it calls are the compiled versions,
-then handed to ``numba.njit``.  No formula is restated here except the normal force of
-eq. (11), which the guard needs at every step.
+then handed to ``numba.njit``.  No formula is restated here: the lift-off guard uses the
+normal force kernel of eq. (11) from :mod:`rollingdisk.equations` too.
 
 The integrator is the explicit Runge-Kutta method of Dormand and Prince of order 8 with
 the 5th/3rd order error estimator (DOP853, Hairer, Norsett & Wanner, *Solving ODE I*,
@@ -45,6 +45,8 @@ _rough_omega_dot = _compile("_rough_omega_dot")
 _smooth_omega_dot = _compile("_smooth_omega_dot")
 _rough_rhs = _compile("_rough_rhs")
 _smooth_rhs = _compile("_smooth_rhs")
+_reduced_state = _compile("_reduced_state")
+_normal_force = _compile("_normal_force")  # eq. (11), for the lift-off guard
 
 # ------------------------------------------------------------------ DOP853 coefficients
 _NS = _dop.N_STAGES  # 12
@@ -72,20 +74,6 @@ def _rhs(rough, h, y, out):
         r2 = _smooth_rhs(h, y)
         for i in range(10):
             out[i] = r2[i]
-
-
-@numba.njit(cache=True)
-def _normal_force(rough, h, y):
-    """F_z of eq. (11): 1 + z_P omega1^2 - y_P d omega1/dt."""
-    if rough:
-        theta, w1, w2, w3 = y[3], y[5], y[6], y[7]
-        ht, s, c, p, y_P, z_P = _geometry(h, theta)
-        d1 = _rough_omega_dot(h, theta, w1, w2, w3)[0]
-    else:
-        theta, w1, w2, w3 = y[5], y[7], y[8], y[9]
-        ht, s, c, p, y_P, z_P = _geometry(h, theta)
-        d1 = _smooth_omega_dot(h, theta, w1, w2, w3)[0]
-    return 1.0 + z_P * w1 * w1 - y_P * d1
 
 
 @numba.njit(cache=True)
@@ -440,12 +428,13 @@ def integrate(rough, h, t0, y0, t_end, rtol, atol, max_step, first_step, use_gua
 
 # ------------------------------------------------------------------ stale-cache guard
 _DISPATCHERS = ("_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs",
-                "_smooth_rhs", "_rhs", "_normal_force", "_guards", "_step", "_error_norm",
+                "_smooth_rhs", "_reduced_state", "_rhs", "_normal_force", "_guards", "_step",
+                "_error_norm",
                 "_rms", "initial_step", "_triggered", "_guard_value", "_locate", "integrate")
 
 
 def rhs_matches_kernels() -> bool:
-    """True if the compiled right-hand side agrees with the numpy kernels of equations.py.
+    """True if the compiled right-hand side and normal force agree with equations.py.
 
     numba's on-disk cache of a function does not notice a change in the functions it calls
     (here: a kernel edited in equations.py would leave ``_rhs`` and ``integrate`` running
@@ -460,6 +449,9 @@ def rhs_matches_kernels() -> bool:
                 _rhs(rough, h, y, out)
                 ref = np.array(kernel(h, y), dtype=float)
                 if not np.allclose(out, ref, rtol=1e-12, atol=1e-12):
+                    return False
+                if not np.isclose(_normal_force(rough, h, y), _eq._normal_force(rough, h, y),
+                                  rtol=1e-12, atol=1e-12):
                     return False
     return True
 

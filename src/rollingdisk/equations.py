@@ -126,20 +126,35 @@ def _smooth_rhs(h, y):
     return (V_X, V_Y, zero, zero, w3 / c, w1, w2 - w3 * p, d1, d2, d3)
 
 
-def _velocity_of_C(ground_is_rough, h, y):
+def _reduced_state(rough, y):
+    """``(theta, omega1, omega2, omega3)`` out of a state vector of either ground."""
+    if rough:
+        return y[3], y[5], y[6], y[7]
+    return y[5], y[7], y[8], y[9]
+
+
+def _normal_force(rough, h, y):
+    """Normal force ``F_z = 1 + z_P omega1^2 - y_P d omega1/dt``, eq. (11)."""
+    theta, w1, w2, w3 = _reduced_state(rough, y)
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    if rough:
+        d1 = _rough_omega_dot(h, theta, w1, w2, w3)[0]
+    else:
+        d1 = _smooth_omega_dot(h, theta, w1, w2, w3)[0]
+    return 1.0 + z_P * w1 * w1 - y_P * d1  # eq. (11)
+
+
+def _velocity_of_C(rough, h, y):
     """``(v_Cx, v_Cy, v_Cz)`` in Cxyz (eqs. 1, 7, 37)."""
-    if ground_is_rough:
-        X_C, Y_C, psi, theta, phi, w1, w2, w3 = y
-        ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    theta, w1, w2, w3 = _reduced_state(rough, y)
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    if rough:
         v_Cx = w2 - ht * w3  # eq. (37)
         v_Cy = w1 * z_P
     else:
-        X_C, Y_C, V_X, V_Y, psi, theta, phi, w1, w2, w3 = y
-        ht, s, c, p, y_P, z_P = _geometry(h, theta)
-        cp = np.cos(psi)
-        sp = np.sin(psi)
-        v_Cx = V_X * cp + V_Y * sp  # eq. (1) inverted
-        v_Cy = -V_X * sp + V_Y * cp
+        psi, V_X, V_Y = y[4], y[2], y[3]
+        v_Cx = V_X * np.cos(psi) + V_Y * np.sin(psi)  # eq. (1) inverted
+        v_Cy = -V_X * np.sin(psi) + V_Y * np.cos(psi)
     return v_Cx, v_Cy, -w1 * y_P  # eq. (7)
 
 
@@ -215,25 +230,34 @@ def velocity_of_C(disk: Disk, ground: str, y):
 def contact_force(disk: Disk, ground: str, y):
     """Contact force ``(F_x, F_y, F_z)`` at P in Cxyz, units of ``m g`` (eqs. 8, 11).
 
-    On smooth ground ``F_x = F_y = 0``.  Contact is maintained while ``F_z > 0``.
-    ``y`` may be a single state or an ``(n, k)`` array of states.
+    Parameters
+    ----------
+    disk : Disk
+    ground : {"rough", "smooth"}
+    y : array_like
+        A state vector, or an ``(n, k)`` array of ``k`` states (layout of
+        :data:`ROUGH_STATE` / :data:`SMOOTH_STATE`).
+
+    Returns
+    -------
+    tuple of float or ndarray
+        ``(F_x, F_y, F_z)``.  On smooth ground ``F_x = F_y = 0``; contact is maintained
+        while ``F_z > 0``.
     """
     y = _as_state(ground, y)
     h = disk.h
     rough = ground == "rough"
-    theta, w1, w2, w3 = (y[3], y[5], y[6], y[7]) if rough else (y[5], y[7], y[8], y[9])
+    F_z = _normal_force(rough, h, y)  # eq. (11)
+    if not rough:
+        return 0.0 * F_z, 0.0 * F_z, F_z
+    theta, w1, w2, w3 = _reduced_state(rough, y)
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
-    if rough:
-        d1, d2, d3 = _rough_omega_dot(h, theta, w1, w2, w3)
-        Omega = w3 / c  # eq. (2)
-        v_Cx = w2 - ht * w3  # eq. (37)
-        v_Cy = w1 * z_P
-        F_x = (d2 - ht * d3) - v_Cy * Omega  # eq. (8)_1; d y_P/d theta = -z_P
-        F_y = (z_P * d1 + y_P * w1 * w1) + v_Cx * Omega  # eq. (8)_2; d z_P/d theta = y_P
-    else:
-        d1, d2, d3 = _smooth_omega_dot(h, theta, w1, w2, w3)
-        F_x = F_y = 0.0 * theta
-    F_z = 1.0 + z_P * w1 * w1 - y_P * d1  # eq. (11)
+    d1, d2, d3 = _rough_omega_dot(h, theta, w1, w2, w3)
+    v_Cx, v_Cy, v_Cz = _velocity_of_C(rough, h, y)  # eq. (37)
+    Omega = w3 / c  # eq. (2)
+    # eq. (8) with the time derivatives of (37): d y_P/d theta = -z_P, d z_P/d theta = y_P
+    F_x = (d2 - ht * d3) - v_Cy * Omega
+    F_y = (z_P * d1 + y_P * w1 * w1) + v_Cx * Omega
     return F_x, F_y, F_z
 
 
@@ -245,8 +269,8 @@ def energy(disk: Disk, ground: str, y):
     y = _as_state(ground, y)
     h = disk.h
     rough = ground == "rough"
-    theta, w1, w2, w3 = (y[3], y[5], y[6], y[7]) if rough else (y[5], y[7], y[8], y[9])
-    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    theta, w1, w2, w3 = _reduced_state(rough, y)
+    z_P = _geometry(h, theta)[5]
     v_Cx, v_Cy, v_Cz = _velocity_of_C(rough, h, y)
     k1 = disk.k1_sq
     k2 = disk.k2_sq
