@@ -116,20 +116,31 @@ def test_jacobian_structure_two_zero_modes():
 
 
 def test_stable_for_all_omega30_regions():
-    """Regions (46)/(59) vs a brute-force scan of omega30 with the linearization."""
+    """Regions (46)/(59) and the varpi^2 = 0 surface vs the independent finite-difference
+    linearization of tests/steady_numeric.py (no code shared with stability.py)."""
+    from steady_numeric import steady_omega20, varpi2_numeric
+
+    def numeric(ground, h, th, w):
+        return varpi2_numeric(h, ground, th, steady_omega20(h, ground, th, w), w)
+
+    n_flag = 0
     for ground in ("rough", "smooth"):
         for h in (0.0, 0.5, 2.0):
             for th in np.linspace(0.05, 1.45, 8):
                 flag = bool(stable_for_all_omega30(ground, h, th))
-                Ws = np.geomspace(0.02, 20, 120)
-                v = varpi2_circle(ground, h, th, Ws)
-                assert flag == bool(np.all(v > 0)) or abs(
-                    np.min(v)) < 1e-6, (ground, h, th)
                 lo, hi = critical_omega30_sq(ground, h, th)
-                if not flag:
-                    w = math.sqrt(0.5 * (lo + hi))
-                    m = steady_motion(Disk(h=h), ground, th, Omega0=w / math.cos(th))
-                    assert varpi2_linearized(m) < 0
+                if flag:
+                    n_flag += 1
+                    assert np.isnan(lo) and np.isnan(hi)
+                    for w in (0.05, 0.3, 1.0, 3.0, 10.0):
+                        assert numeric(ground, h, th, w) > 0, (ground, h, th, w)
+                    continue
+                # unstable strictly between the roots in omega30^2, stable outside them
+                assert numeric(ground, h, th, math.sqrt(0.5 * (lo + hi))) < 0
+                assert numeric(ground, h, th, math.sqrt(1.02 * hi)) > 0
+                if lo > 1e-6:
+                    assert numeric(ground, h, th, math.sqrt(0.98 * lo)) > 0
+    assert 0 < n_flag < 48  # both kinds of region were visited
 
 
 def test_smooth_region_is_eq59():
@@ -144,12 +155,40 @@ def test_smooth_region_is_eq59():
 
 
 def test_stability_dataclass():
-    s = Stability.from_varpi2(4.0)
+    s = Stability(4.0)
     assert s.stable and s.varpi == 2.0 and s.period == pytest.approx(math.pi)
-    u = Stability.from_varpi2(-9.0)
+    assert s.growth_rate is None
+    u = Stability(-9.0)
     assert not u.stable and u.period is None and u.growth_rate == 3.0 and math.isnan(u.varpi)
+    with pytest.raises(ValueError, match="varpi2 must be a finite"):
+        Stability(math.nan)
+    with pytest.raises(AttributeError):
+        s.varpi2 = 1.0
     assert np.isnan(varpi2_circle("rough", 0.3, 0.5, 0.0))
     assert varpi2_closed_form("rough", 0.0, 0.2, np.ones(3), np.ones(3)).shape == (3,)
+
+
+@pytest.mark.parametrize("ground", ["rough", "smooth"])
+def test_vectorized_forms_are_nan_outside_the_domain(ground):
+    for h, th in ((-1.0, 0.5), (0.3, math.pi / 2), (0.3, -2.0)):
+        assert np.isnan(varpi2_closed_form(ground, h, th, 1.0, 1.0))
+        assert all(np.isnan(c) for c in circle_coefficients(ground, h, th))
+        assert not stable_for_all_omega30(ground, h, th)
+
+
+def test_reduced_jacobian_validates():
+    with pytest.raises(ValueError, match="h must"):
+        reduced_jacobian("rough", -1.0, 0.3, 1.0, 1.0)
+    with pytest.raises(ValueError, match=r"theta0 must lie in \(-1.5708, 1.5708\)"):
+        reduced_jacobian("rough", 0.1, 2.0, 1.0, 1.0)
+
+
+@pytest.mark.parametrize("ground", ["rough", "smooth"])
+@pytest.mark.parametrize("Omega0", [1e-300, 1e160])
+def test_out_of_range_speeds_say_so(ground, Omega0):
+    """No inf/NaN results: an Omega0 beyond floating-point range is refused plainly."""
+    with pytest.raises(ValueError, match="floating-point range"):
+        stability(steady_motion(Disk(h=0.3), ground, 0.5, Omega0=Omega0))
 
 
 # ------------------------------------------------------------------ simulation

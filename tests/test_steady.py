@@ -228,11 +228,34 @@ def test_vectorized_maps():
             if Om[i, j] > 0:
                 m = steady_motion(Disk(h=0.4), "rough", float(th[i, 0]), r_C=float(rc[0, j]))
                 assert m.Omega0 ** 2 == pytest.approx(Om[i, j], rel=1e-12)
+                assert_steady(m)  # the derived equations vanish there: the map is right
+                assert m.r_C == pytest.approx(float(rc[0, j]), rel=1e-12, abs=1e-14)
             elif np.isfinite(Om[i, j]):
                 with pytest.raises(NoSteadyMotion):
                     steady_motion(Disk(h=0.4), "rough", float(th[i, 0]), r_C=float(rc[0, j]))
     assert np.isnan(Omega0_sq(0.4, 2.0, 1.0)) and np.isnan(r_C_star(-1.0, 0.3))
     assert np.isnan(Omega0_sq(0.4, math.atan(0.4), 1.0))
+
+
+def test_single_point_validation():
+    disk = Disk(h=0.3)
+    with pytest.raises(ValueError, match=r"theta0 must lie in \(-pi/2, 0\) or \(0, pi/2\)"):
+        steady_motion(disk, "rough", 0.0, Omega0=1.0)
+    with pytest.raises(ValueError, match="lean must be 1 or -1"):
+        straight_line(disk, "rough", 1.0, lean=True)
+    with pytest.raises(ValueError, match="h must"):
+        se_circle_radius(-1.0)
+    with pytest.raises(ValueError, match="exactly one of Omega0, r_C, r_P"):
+        steady_motion(disk, "rough", 0.3, Omega0=1.0, r_C=1.0)
+    with pytest.raises(NoSteadyMotion, match="floating-point range"):
+        steady_motion(disk, "rough", 0.5, Omega0=1e-300)
+
+
+def test_as_dict_round_trip():
+    m = steady_motion(Disk(h=0.3), "rough", 0.6, r_C=1.5)
+    d = m.as_dict()
+    assert SteadyMotion(**d) == m
+    assert straight_line(Disk(h=0.3), "rough", 2.0).as_dict()["r_C"] is None
 
 
 # ------------------------------------------------------------------ simulation

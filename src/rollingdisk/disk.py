@@ -26,8 +26,7 @@ def check_real(name: str, value, *, low: float | None = None, high: float | None
                low_open: bool = False, high_open: bool = False) -> float:
     """Return ``value`` as a float, or raise ``ValueError`` naming ``name`` and the range.
 
-    Booleans and strings are rejected; NaN and infinities are rejected unless the range
-    itself is unbounded on that side (it never is for infinities here: they are rejected).
+    Booleans, strings and other non-numbers, NaN and infinities are rejected.
     """
     lo = "-inf" if low is None else f"{low:g}"
     hi = "inf" if high is None else f"{high:g}"

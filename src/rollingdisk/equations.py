@@ -210,6 +210,20 @@ def equations_of_motion(disk: Disk, ground: str) -> Callable[[float, np.ndarray]
 def omega_dot(disk: Disk, ground: str, theta, omega1, omega2, omega3):
     """``(d omega1/dt, d omega2/dt, d omega3/dt)``: eq. (38) on rough, (49) on smooth ground.
 
+    Parameters
+    ----------
+    disk : Disk
+    ground : {"rough", "smooth"}
+    theta, omega1, omega2, omega3 : float or ndarray
+        Inclination and angular velocity in C xi eta zeta (element-wise on arrays).
+
+    Returns
+    -------
+    tuple
+        The three angular accelerations.
+
+    Notes
+    -----
     These, with ``d theta/dt = omega1``, form the reduced system that governs the
     inclination and the angular velocity; positions and ``psi, phi`` do not enter.
     """
@@ -218,10 +232,11 @@ def omega_dot(disk: Disk, ground: str, theta, omega1, omega2, omega3):
 
 
 def velocity_of_C(disk: Disk, ground: str, y):
-    """Velocity of the centre C in Cxyz, ``(v_Cx, v_Cy, v_Cz)``.
+    """Velocity of the centre C in Cxyz, ``(v_Cx, v_Cy, v_Cz)``, units of ``sqrt(a g)``.
 
-    On rough ground it follows from the no-slip condition, eq. (37); on smooth ground from
-    the inertial velocity ``(V_X, V_Y)`` in the state.  ``v_Cz = -omega1 y_P`` (eq. 7).
+    ``y`` is a state vector or an ``(n, k)`` array of states.  On rough ground the velocity
+    follows from the no-slip condition, eq. (37); on smooth ground from the inertial velocity
+    ``(V_X, V_Y)`` in the state.  ``v_Cz = -omega1 y_P`` (eq. 7).
     """
     y = _as_state(ground, y)
     return _velocity_of_C(ground == "rough", disk.h, y)
@@ -264,6 +279,7 @@ def contact_force(disk: Disk, ground: str, y):
 def energy(disk: Disk, ground: str, y):
     """Total mechanical energy, units of ``m g a`` (eq. 13), potential energy ``Z_C``.
 
+    ``y`` is a state vector or an ``(n, k)`` array of states; returns a float or an array.
     ``Z_C = -z_P`` (eq. 7), so a disk standing upright at rest (h = 0) has ``E = 1``.
     """
     y = _as_state(ground, y)
@@ -279,7 +295,10 @@ def energy(disk: Disk, ground: str, y):
 
 
 def contact_point(disk: Disk, ground: str, y):
-    """Contact point P on the plane, ``(X_P, Y_P)`` in OXYZ (eq. 5)."""
+    """Contact point P on the plane, ``(X_P, Y_P)`` in OXYZ (eq. 5).
+
+    ``y`` is a state vector or an ``(n, k)`` array of states; returns floats or arrays.
+    """
     y = _as_state(ground, y)
     rough = ground == "rough"
     X_C, Y_C = y[0], y[1]

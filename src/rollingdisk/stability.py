@@ -48,7 +48,7 @@ class Stability:
     Attributes
     ----------
     varpi2 : float
-        Squared angular frequency ``varpi^2`` (units of ``g/a``).
+        Squared angular frequency ``varpi^2`` (units of ``g/a``); finite.
     stable : bool
         ``varpi2 > 0``.
     varpi : float
@@ -57,21 +57,33 @@ class Stability:
         ``2 pi / varpi`` (units of ``sqrt(a/g)``), None if unstable.
     growth_rate : float or None
         ``sqrt(-varpi2)`` (e-folding rate of a perturbation), None if stable.
+
+    Examples
+    --------
+    >>> Stability(4.0).period == math.pi
+    True
     """
 
     varpi2: float
-    stable: bool
-    varpi: float
-    period: float | None
-    growth_rate: float | None
 
-    @classmethod
-    def from_varpi2(cls, varpi2: float) -> Stability:
-        varpi2 = float(varpi2)
-        if varpi2 > 0:
-            w = math.sqrt(varpi2)
-            return cls(varpi2, True, w, 2.0 * math.pi / w, None)
-        return cls(varpi2, False, math.nan, None, math.sqrt(-varpi2))
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "varpi2", check_real("varpi2", self.varpi2))
+
+    @property
+    def stable(self) -> bool:
+        return self.varpi2 > 0.0
+
+    @property
+    def varpi(self) -> float:
+        return math.sqrt(self.varpi2) if self.stable else math.nan
+
+    @property
+    def period(self) -> float | None:
+        return 2.0 * math.pi / self.varpi if self.stable else None
+
+    @property
+    def growth_rate(self) -> float | None:
+        return None if self.stable else math.sqrt(-self.varpi2) + 0.0
 
 
 # ---------------------------------------------------------------------------------------
@@ -80,6 +92,19 @@ class Stability:
 def varpi2_closed_form(ground: str, h, theta0, omega20, omega30):
     """``varpi^2`` at a steady state, eq. (40)-(41) (rough) or eq. (51) (smooth).
 
+    Parameters
+    ----------
+    ground : {"rough", "smooth"}
+    h, theta0, omega20, omega30 : float or array_like
+        Broadcast together; a steady state of that ground.
+
+    Returns
+    -------
+    float or ndarray
+        ``varpi^2``; NaN outside ``h >= 0, |theta0| < pi/2``.
+
+    Notes
+    -----
     Element-wise on arrays.  ``(theta0, omega20, omega30)`` must be a steady state (eq. 28
     or 34 holds); off the steady manifold the printed eq. (51) differs from the
     linearization (it was simplified with eq. (34)), eq. (40) does not.  ``h~ = h sgn
@@ -91,6 +116,13 @@ def varpi2_closed_form(ground: str, h, theta0, omega20, omega30):
     p = np.tan(t)
     h2 = h * h
     sq = np.sqrt(1.0 + p * p)
+    with np.errstate(all="ignore"):
+        out = _varpi2_closed_form(ground, h2, ht, p, sq, w2, w3)
+    return np.where(_map_domain(h, t), out, np.nan)[()]
+
+
+def _varpi2_closed_form(ground, h2, ht, p, sq, w2, w3):
+    """Eq. (40)-(41) on rough, eq. (51) on smooth ground (element-wise)."""
     if ground == "rough":
         P22 = 36.0 * (3.0 + 2.0 * ht * p)  # eq. (41)
         P23 = -6.0 * (4.0 * ht * (3.0 + 8.0 * h2) * p * p + (15.0 + 56.0 * h2) * p
@@ -100,13 +132,12 @@ def varpi2_closed_form(ground: str, h, theta0, omega20, omega30):
         out = (((P22 * w2 * w2 + P23 * w2 * w3 + P33 * w3 * w3) * sq
                 - 12.0 * (3.0 + 8.0 * h2) * (1.0 + ht * p))
                / ((3.0 + 8.0 * h2) * (15.0 + 16.0 * h2) * sq))  # eq. (40)
-    else:
-        a = 3.0 + 4.0 * h2
-        Q = 3.0 + 16.0 * h2 - 24.0 * ht * p + (15.0 + 4.0 * h2) * p * p
-        out = ((1.0 + p * p) * (36.0 * w2 * w2 - 18.0 * a * p * w2 * w3
-                                + a * a * (1.0 + 3.0 * p * p) * w3 * w3) / (a * Q)
-               - 12.0 * (1.0 + ht * p) * sq / Q)  # eq. (51)
-    return out[()]
+        return out
+    a = 3.0 + 4.0 * h2
+    Q = 3.0 + 16.0 * h2 - 24.0 * ht * p + (15.0 + 4.0 * h2) * p * p
+    return ((1.0 + p * p) * (36.0 * w2 * w2 - 18.0 * a * p * w2 * w3
+                             + a * a * (1.0 + 3.0 * p * p) * w3 * w3) / (a * Q)
+            - 12.0 * (1.0 + ht * p) * sq / Q)  # eq. (51)
 
 
 def stability(motion: SteadyMotion) -> Stability:
@@ -124,9 +155,13 @@ def stability(motion: SteadyMotion) -> Stability:
     """
     if not isinstance(motion, SteadyMotion):
         raise ValueError(f"motion must be a SteadyMotion, got {type(motion).__name__}")
-    v = varpi2_closed_form(motion.ground, motion.h, motion.theta0, motion.omega20,
-                           motion.omega30)
-    return Stability.from_varpi2(float(v))
+    v = float(varpi2_closed_form(motion.ground, motion.h, motion.theta0, motion.omega20,
+                                 motion.omega30))
+    if not math.isfinite(v):
+        raise ValueError(f"varpi^2 of this steady motion is not a finite number ({v}): "
+                         "its speeds are beyond floating-point range (Omega0 too large or too "
+                         "small)")
+    return Stability(v)
 
 
 # ---------------------------------------------------------------------------------------
@@ -143,6 +178,21 @@ def reduced_jacobian(ground: str, h: float, theta0: float, omega20: float,
                      omega30: float) -> np.ndarray:
     """Jacobian of the reduced system ``d/dt (theta, omega1, omega2, omega3)`` at a steady state.
 
+    Parameters
+    ----------
+    ground : {"rough", "smooth"}
+    h : float
+        Half-thickness, ``h >= 0``.
+    theta0, omega20, omega30 : float
+        The steady state (``omega1 = 0``), ``|theta0| < pi/2``.
+
+    Returns
+    -------
+    ndarray, shape (4, 4)
+        ``J[i, j] = d f_i / d x_j`` with ``x = (theta, omega1, omega2, omega3)``.
+
+    Notes
+    -----
     The right-hand side is the library's derived equations of motion
     (:func:`rollingdisk.equations.omega_dot`, eqs. 38 / 49).  Columns ``omega1..3`` are
     complex-step derivatives (exact to rounding).  The ``theta`` column is a central
@@ -153,6 +203,11 @@ def reduced_jacobian(ground: str, h: float, theta0: float, omega20: float,
     ``theta = 0`` are evaluated with ``-h`` so that ``h~`` keeps its value at ``theta0``.
     """
     ground = check_ground(ground)
+    h = check_real("h", h, low=0.0)
+    theta0 = check_real("theta0", theta0, low=-math.pi / 2, high=math.pi / 2, low_open=True,
+                        high_open=True)
+    omega20 = check_real("omega20", omega20)
+    omega30 = check_real("omega30", omega30)
     x0 = np.array([theta0, 0.0, omega20, omega30], dtype=float)
     J = np.empty((4, 4))
     eps = 1e-30
@@ -207,6 +262,19 @@ def varpi2_linearized(motion: SteadyMotion) -> float:
 def circle_coefficients(ground: str, h, theta0):
     """``(P0, P1, P2, den)`` with ``varpi^2 = (P2 w^4 + P1 w^2 + P0) / (den w^2)``, ``w = omega30``.
 
+    Parameters
+    ----------
+    ground : {"rough", "smooth"}
+    h, theta0 : float or array_like
+        Broadcast together.
+
+    Returns
+    -------
+    tuple of ndarray
+        ``(P0, P1, P2, den)``, NaN outside ``h >= 0, |theta0| < pi/2``.
+
+    Notes
+    -----
     Rough: eq. (45) with the corrected ``P0 = 144 (p0 - h~)^2 sqrt(1 + p0^2)`` (the paper
     prints it without the square root), ``P1``, ``P2`` as printed.  Smooth: eqs. (55)-(56).
     ``den > 0`` everywhere.  Element-wise; ``theta0 = 0`` is the limit ``0+``.
@@ -232,7 +300,8 @@ def circle_coefficients(ground: str, h, theta0):
         P1 = -12.0 * a * (1.0 + 2.0 * ht * p - p * p) * sq
         P2 = a * a * q * q
         den = a * (3.0 + 16.0 * h2 - 24.0 * ht * p + (15.0 + 4.0 * h2) * p * p)
-    return P0, P1, P2, den
+    out = np.where(_map_domain(h, t), 0.0, np.nan)  # NaN outside the domain
+    return P0 + out, P1 + out, P2 + out, den + out
 
 
 def varpi2_circle(ground: str, h, theta0, omega30):
@@ -265,6 +334,18 @@ def varpi2_rough_rC(h, theta0, r_C):
 def critical_omega30_sq(ground: str, h, theta0):
     """The ``varpi^2 = 0`` surface (Figures 6, 8): roots ``(lower, upper)`` in ``omega30^2``.
 
+    Parameters
+    ----------
+    ground : {"rough", "smooth"}
+    h, theta0 : float or array_like
+        Broadcast together.
+
+    Returns
+    -------
+    (lower, upper) : tuple of float or ndarray
+
+    Notes
+    -----
     Circles with ``lower < omega30^2 < upper`` are unstable, all others stable.  Both NaN
     where there is no real positive root (stable for every ``omega30``).
     """
@@ -281,16 +362,27 @@ def critical_omega30_sq(ground: str, h, theta0):
 def stable_for_all_omega30(ground: str, h, theta0):
     """Where every steady circle is stable, whatever ``omega30``: regions (46) / (59).
 
+    Parameters
+    ----------
+    ground : {"rough", "smooth"}
+    h, theta0 : float or array_like
+        Broadcast together.
+
+    Returns
+    -------
+    bool or ndarray of bool
+        True where no ``omega30`` gives ``varpi^2 < 0``.
+
+    Notes
+    -----
     ``P2 w^4 + P1 w^2 + P0 > 0`` for all ``w^2 > 0`` iff ``P1 >= 0`` or
     ``Delta = P1^2 - 4 P0 P2 < 0`` (``P0 >= 0``, ``P2 > 0``).  On smooth ground ``Delta < 0``
     is eq. (59): ``3p^4 - 4h~p^3 + 6p^2 - 12h~p - 1 + 4h^2 > 0``.  Boolean array (False
     outside the domain).
     """
     h_a, t_a = np.broadcast_arrays(np.asarray(h, dtype=float), np.asarray(theta0, dtype=float))
-    P0, P1, P2, den = circle_coefficients(ground, h_a, t_a)
-    with np.errstate(all="ignore"):
-        ok = (P1 >= 0) | (P1 * P1 - 4.0 * P0 * P2 < 0)
-    return (ok & _map_domain(h_a, t_a))[()]
+    lower, upper = critical_omega30_sq(ground, h_a, t_a)  # no positive root: stable for all
+    return (np.isnan(upper) & _map_domain(h_a, t_a))[()]
 
 
 # ---------------------------------------------------------------------------------------
@@ -321,6 +413,7 @@ class Thresholds:
     smooth_spin_omega30_sq: float
 
     def as_dict(self) -> dict:
+        """``{"rough": {...}, "smooth": {...}}``: the layout of ``thresholds --json``."""
         return {
             "rough": {"straight_line_omega20_sq": self.rough_straight_line_omega20_sq,
                       "se_circle_omega30_sq": self.rough_se_circle_omega30_sq},
@@ -331,6 +424,16 @@ class Thresholds:
 
 def thresholds(h: float) -> Thresholds:
     """Stability thresholds of eqs. (42), (43), (53), (57) (all confirmed by derivation).
+
+    Parameters
+    ----------
+    h : float
+        Half-thickness, ``h >= 0``.
+
+    Returns
+    -------
+    Thresholds
+        Critical squared speeds: steady motions faster than these are stable.
 
     Examples
     --------

@@ -158,8 +158,9 @@ def _check_theta0(disk: Disk, theta0) -> float:
                         low_open=True, high_open=True)
     if theta0 == 0.0 and disk.h > 0.0:
         raise ValueError(
-            "theta0 must be non-zero for a disk of finite thickness (h > 0): at theta0 = 0 "
-            "the disk touches the plane along a line, which the theory excludes (section 2)"
+            "theta0 must lie in (-pi/2, 0) or (0, pi/2) for a disk of finite thickness "
+            "(h > 0): at theta0 = 0 the disk touches the plane along a line, which the theory "
+            "excludes (section 2)"
         )
     return theta0
 
@@ -170,7 +171,8 @@ def se_circle_radius(h: float, theta0: float = 1.0) -> float:
     ``h~ (3 - 4h^2) / (6 (3 + 2h^2) sqrt(1 + h^2))`` with ``h~ = h sgn(theta0)``: positive
     (leaning towards A) for ``h < sqrt(3)/2``, negative for ``h > sqrt(3)/2``.
     """
-    ht = h_tilde(h, theta0)
+    h = check_real("h", h, low=0.0)
+    ht = h_tilde(h, check_real("theta0", theta0))
     return ht * (3.0 - 4.0 * h * h) / (6.0 * (3.0 + 2.0 * h * h) * math.sqrt(1.0 + h * h))
 
 
@@ -212,6 +214,10 @@ def _build(disk: Disk, ground: str, theta0: float, Omega0: float) -> SteadyMotio
         F_y = 0.0
     r_P = r_C + y_P  # eq. (24)
     omega0 = omega20 - Omega0 * s  # eq. (3)
+    if not all(math.isfinite(x) for x in (omega20, omega0, r_C, r_P, F_y)):
+        raise NoSteadyMotion(
+            f"Omega0 = {Omega0:.6g} is beyond floating-point range for this steady motion "
+            f"(omega20 = {omega20:.6g}, r_C = {r_C:.6g}): choose 1e-100 < |Omega0| < 1e100")
     if abs(r_C) <= SE_TOL and abs(r_P) <= SE_TOL:
         motion = "spin"
         r_C = r_P = 0.0
@@ -369,7 +375,7 @@ def straight_line(disk: Disk, ground: str, omega0: float, *, v_Cx0: float | None
     if not isinstance(disk, Disk):
         raise ValueError(f"disk must be a Disk, got {type(disk).__name__}")
     omega0 = check_real("omega0", omega0)
-    if lean not in (1, -1):
+    if isinstance(lean, bool) or lean not in (1, -1):
         raise ValueError(f"lean must be 1 or -1, got {lean!r}")
     v_Cy0 = check_real("v_Cy0", v_Cy0)
     v_Cx0 = omega0 if v_Cx0 is None else check_real("v_Cx0", v_Cx0)
@@ -377,9 +383,7 @@ def straight_line(disk: Disk, ground: str, omega0: float, *, v_Cx0: float | None
         raise NoSteadyMotion(
             "on rough ground the contact point does not slip, so a straight line has "
             f"v_Cx0 = omega0 = {omega0:.6g} and v_Cy0 = 0 (eq. 18)")
-    theta0 = lean * math.atan(disk.h)  # y_P0 = 0, eq. (16)
-    if theta0 == 0.0 and disk.h > 0.0:  # pragma: no cover - atan(h) > 0 for h > 0
-        raise ValueError("theta0 = 0")
+    theta0 = lean * disk.static_equilibrium_theta  # y_P0 = 0, eq. (16)
     return SteadyMotion(ground=ground, h=disk.h, motion="straight", theta0=theta0, Omega0=0.0,
                         omega0=omega0, omega20=omega0, omega30=0.0, r_C=math.nan,
                         r_P=math.nan, F_y=0.0, v_C=math.hypot(v_Cx0, v_Cy0), v_Cx0=v_Cx0,
