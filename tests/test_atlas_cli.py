@@ -60,7 +60,7 @@ def test_atlas_thresholds_and_motions(quick_atlas):
     # the simulation oscillates / grows at the closed-form rate
     assert st["measured"] == pytest.approx(st["varpi"], rel=0.02)
     assert un["measured"] == pytest.approx(un["growth_rate"], rel=0.05)
-    assert st["energy_drift"] < 1e-6 and un["energy_drift"] < 1e-6
+    assert st["energy_error"] < 1e-6 and un["energy_error"] < 1e-6
 
 
 def test_atlas_progress_lines(quick_atlas):

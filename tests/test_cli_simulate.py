@@ -113,7 +113,7 @@ def test_progress_bar_draws_on_stderr():
     (["--h", "0.1", "--state", "theta=0.3", "--t-end", "5", "--rtol", "0"], "rtol"),
     (["--h", "-1", "--state", "theta=0.3", "--t-end", "5"], "h"),
     (["--h", "0.1", "--state", "theta=0.3", "--t-end", "5", "--out", "/nonexistent/x.csv"],
-     "directory"),
+     "no such folder"),
 ])
 def test_bad_input_exits_2_with_one_line(capsys, argv, match):
     assert main(["simulate", *argv]) == 2

@@ -102,14 +102,16 @@ def poses(traj, n_frames: int = 60, *, n: int = 48) -> tuple[np.ndarray, list[Di
                           s["phi"][i], n=n) for i in range(len(tf))]
 
 
-def _limits(traj, pad: float = 1.3):
+def _limits(traj, frames, pad: float = 0.3):
+    """Axis limits that hold the paths of C and P and every drawn disk, with equal scales."""
+    rims = np.concatenate([np.concatenate(f.rims, axis=1) for f in frames], axis=1)  # (3, N)
     XP, YP = trajectory_series(traj, "X_P"), trajectory_series(traj, "Y_P")
     XC, YC = trajectory_series(traj, "X_C"), trajectory_series(traj, "Y_C")
-    xs = np.concatenate([XP, XC])
-    ys = np.concatenate([YP, YC])
+    xs = np.concatenate([XP, XC, rims[0]])
+    ys = np.concatenate([YP, YC, rims[1]])
     cx, cy = 0.5 * (xs.min() + xs.max()), 0.5 * (ys.min() + ys.max())
     half = 0.5 * max(xs.max() - xs.min(), ys.max() - ys.min()) + pad
-    return (cx - half, cx + half), (cy - half, cy + half), (0.0, 2.0 * pad + traj.disk.h)
+    return (cx - half, cx + half), (cy - half, cy + half), (0.0, rims[2].max() + pad)
 
 
 def draw_disk(ax, pose: DiskPose, *, face_color="#9ecae1", side_color="#4a7fb0",
@@ -189,11 +191,10 @@ def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
     t = np.asarray(traj.t, float)
     XP, YP = trajectory_series(traj, "X_P"), trajectory_series(traj, "Y_P")
     XC, YC = trajectory_series(traj, "X_C"), trajectory_series(traj, "Y_C")
-    (x0, x1), (y0, y1), (z0, z1) = _limits(traj)
+    (x0, x1), (y0, y1), (z0, z1) = _limits(traj, frames)
     fig = Figure(figsize=size)
     ax = fig.add_subplot(1, 1, 1, projection="3d")
     head = title if title is not None else f"{traj.ground} ground, h = {traj.disk.h:.4g}"
-    out.parent.mkdir(parents=True, exist_ok=True)
     with writer.saving(fig, str(out), dpi):
         for i, (ti, pose) in enumerate(zip(tf, frames, strict=True)):
             ax.cla()

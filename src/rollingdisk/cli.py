@@ -11,7 +11,10 @@ import math
 import sys
 from collections.abc import Sequence
 
+from .atlas import DEFAULT_H  # the default disk of the picture commands
+
 __all__ = ["main", "parse_angle"]
+
 
 
 class CLIError(Exception):
@@ -31,6 +34,29 @@ def parse_angle(text: str) -> float:
         raise argparse.ArgumentTypeError(
             f"invalid angle {text!r}: give radians (0.5) or degrees with a suffix (30deg)"
         ) from None
+
+
+def _positive_int(text: str) -> int:
+    """An integer >= 1 (frames, frames per second, dots per inch)."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be an integer >= 1, got {text!r}")
+    return value
+
+
+def _check_out_file(path: str, command: str) -> None:
+    """Refuse an output file whose folder does not exist, or which is a folder, before work."""
+    import os
+
+    target = os.path.abspath(path)
+    if os.path.isdir(target):
+        raise CLIError(f"rollingdisk {command}: --out {path!r} is a folder; give a file name")
+    if not os.path.isdir(os.path.dirname(target)):
+        raise CLIError(f"rollingdisk {command}: --out: no such folder: "
+                       f"{os.path.dirname(target)}")
 
 
 class _Parser(argparse.ArgumentParser):
@@ -135,12 +161,7 @@ def _add_steady(sub) -> None:
 
 
 def _steady_record(motion, stab) -> dict:
-    rec = motion.as_dict()
-    rec["theta0_deg"] = math.degrees(motion.theta0)
-    rec.update(varpi2=stab.varpi2, stable=bool(stab.stable),
-               varpi=None if not stab.stable else stab.varpi, period=stab.period,
-               growth_rate=stab.growth_rate)
-    return rec
+    return {**motion.as_dict(), "theta0_deg": math.degrees(motion.theta0), **stab.as_dict()}
 
 
 def _run_steady(args) -> int:
@@ -341,11 +362,7 @@ def _run_simulate(args) -> int:
     disk = Disk(h=args.h)
     motion = _simulate_motion(args)
     if args.out is not None:
-        import os
-
-        folder = os.path.dirname(os.path.abspath(args.out))
-        if not os.path.isdir(folder):
-            raise CLIError(f"rollingdisk simulate: --out: no such directory: {folder}")
+        _check_out_file(args.out, "simulate")
     options = dict(rtol=DEFAULT_RTOL if args.rtol is None else args.rtol,
                    atol=DEFAULT_ATOL if args.atol is None else args.atol, method=args.method)
     if args.method == "dop853":
@@ -369,7 +386,8 @@ def _run_simulate(args) -> int:
     finally:
         if bar is not None:
             bar.close()
-    varpi2 = None if motion is None else float(stability(motion).varpi2)
+    stab = None if motion is None else stability(motion)
+    varpi2 = None if stab is None else stab.varpi2
     freq = oscillation_frequency(traj)
     # the linear regime of an unstable start: up to 1e3 times the perturbation (>= 1e-4;
     # the nonlinear bias is about max_amplitude, relatively)
@@ -388,7 +406,7 @@ def _run_simulate(args) -> int:
         "theta_min": float(np.min(theta)),
         "theta_max": float(np.max(theta)),
         "theta_frequency": freq,
-        "varpi": math.sqrt(varpi2) if varpi2 is not None and varpi2 > 0 else None,
+        "varpi": None if stab is None else stab.as_dict()["varpi"],
         "varpi2": varpi2,
         "growth_rate": growth,
         "wall_time_s": traj.wall_time,
@@ -420,38 +438,42 @@ def _add_figures(sub) -> None:
     p.add_argument("--out", required=True, help="output folder")
     p.add_argument("--scale", type=float, default=1.0,
                    help="grid resolution factor (default 1; 0.2 for a quick look)")
-    p.add_argument("--dpi", type=int, default=110)
+    p.add_argument("--dpi", type=_positive_int, default=110)
     p.add_argument("--only", nargs="+", metavar="FIG",
                    help="a subset of fig4 fig5 fig6 fig7 fig8")
     p.set_defaults(handler=_run_figures)
 
     p = sub.add_parser("map", help="existence / stability map or varpi^2 = 0 surface")
     p.add_argument("--ground", required=True, choices=("rough", "smooth"))
-    p.add_argument("--h", type=float, default=0.17, help="half-thickness (default 0.17)")
+    p.add_argument("--h", type=float, default=DEFAULT_H,
+                   help=f"half-thickness (default {DEFAULT_H:g}; not used by --kind surface, "
+                   "which spans h)")
     p.add_argument("--kind", required=True,
                    choices=("existence", "stability", "surface", "all-omega30"),
                    help="existence: (theta0, r_C) plane; stability: (theta0, omega30) "
                    "plane; surface: varpi^2 = 0 in (theta0, h, omega30); all-omega30: "
                    "(theta0, h) region stable for every omega30")
     p.add_argument("--out", required=True, help="image file (.png, .pdf, .svg)")
-    p.add_argument("--dpi", type=int, default=110)
+    p.add_argument("--dpi", type=_positive_int, default=110)
     p.set_defaults(handler=_run_map)
 
     p = sub.add_parser("animate", help="simulate a steady motion from a small tilt "
                        "perturbation and write a 3D animation (.gif, or .mp4 with ffmpeg)")
-    _add_motion_args(p, h_default=0.17)
+    _add_motion_args(p, h_default=DEFAULT_H)
     p.add_argument("--perturb", type=float, default=0.0, help="added to theta(0)")
     p.add_argument("--kick", type=float, default=0.01, help="added to omega1(0) = dtheta/dt")
     p.add_argument("--t-end", type=float, default=20.0, help="simulated time")
-    p.add_argument("--frames", type=int, default=60)
-    p.add_argument("--fps", type=int, default=15)
-    p.add_argument("--dpi", type=int, default=70)
+    p.add_argument("--frames", type=_positive_int, default=60)
+    p.add_argument("--fps", type=_positive_int, default=15)
+    p.add_argument("--dpi", type=_positive_int, default=70)
     p.add_argument("--out", required=True, help="motion.gif (or .mp4 when ffmpeg exists)")
     p.set_defaults(handler=_run_animate)
 
     p = sub.add_parser("atlas", help="the atlas of one disk: thresholds, maps, two simulated "
                        "steady motions with animations, index.html")
-    p.add_argument("--h", type=float, default=None, help="half-thickness (default 0.17)")
+    p.add_argument("--h", type=float, default=DEFAULT_H,
+                   help=f"half-thickness (default {DEFAULT_H:g}, close to a commercial "
+                   "Euler's disk)")
     p.add_argument("--out", default="atlas", help="output folder (default ./atlas)")
     p.add_argument("--quick", action="store_true", help="coarse grids, short simulations")
     p.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
@@ -476,6 +498,7 @@ def _run_figures(args) -> int:
 
 
 def _run_map(args) -> int:
+    _check_out_file(args.out, "map")
     _agg()
     from . import plotting
 
@@ -503,6 +526,7 @@ def _run_animate(args) -> int:
     from .stability import stability
 
     writer_for(args.out, args.fps)  # a bad file name fails before the simulation
+    _check_out_file(args.out, "animate")
     motion = _motion_from_args(args, "animate")
     stab = stability(motion)
     traj = simulate_steady(motion, args.t_end, perturb=args.perturb, kick=args.kick,
@@ -510,18 +534,16 @@ def _run_animate(args) -> int:
     verdict = (f"stable, varpi^2 = {stab.varpi2:.4g}" if stab.stable
                else f"unstable, varpi^2 = {stab.varpi2:.4g}")
     print(f"{args.ground} ground, h = {args.h:g}, theta0 = {motion.theta0:.4g}, "
-          f"Omega0 = {motion.Omega0:.4g}: {verdict}; simulation "
-          f"{getattr(traj, 'status', 'completed')}", file=sys.stderr)
+          f"Omega0 = {motion.Omega0:.4g}: {verdict}; simulation {traj.status}", file=sys.stderr)
     out = animate(traj, args.out, n_frames=args.frames, fps=args.fps, dpi=args.dpi)
     print(out)
     return 0
 
 
 def _run_atlas(args) -> int:
-    from .atlas import DEFAULT_H, build_atlas
+    from .atlas import build_atlas
 
-    h = DEFAULT_H if args.h is None else args.h
-    result = build_atlas(h, args.out, quick=args.quick, progress=not args.quiet)
+    result = build_atlas(args.h, args.out, quick=args.quick, progress=not args.quiet)
     print(result.index)
     return 0
 
@@ -549,6 +571,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     except ValueError as exc:
         print(f"rollingdisk: error: {exc}", file=sys.stderr)
+        return 2
+    except OSError as exc:  # an output path that cannot be written
+        where = f"{exc.filename}: " if exc.filename else ""
+        print(f"rollingdisk: error: {where}{exc.strerror or exc}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print("rollingdisk: interrupted", file=sys.stderr)

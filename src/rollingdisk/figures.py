@@ -13,6 +13,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from . import plotting
+from .disk import check_real
 
 __all__ = ["FIGURE_HS", "figure4", "figure5", "figure6", "figure7", "figure8",
            "paper_figures", "FIGURES"]
@@ -114,6 +115,8 @@ def paper_figures(out_dir, *, scale: float = 1.0, dpi: int = 110,
     progress : callable, optional
         Called with a short message before each figure.
     """
+    scale = check_real("scale", scale, low=0.0, low_open=True)
+    dpi = int(check_real("dpi", dpi, low=1.0))
     names = list(FIGURES) if only is None else list(only)
     for name in names:
         if name not in FIGURES:

@@ -324,6 +324,9 @@ def plot_all_omega30_stable(ground: str, ax=None, *, n=(240, 200),
     from .stability import stable_for_all_omega30
 
     check_ground(ground)
+    if mark_h is not None:
+        mark_h = check_real("mark_h", mark_h, low=0.0)
+        h_range = (h_range[0], max(h_range[1], 1.2 * mark_h))  # keep the marked disk in view
     ax = _axes(ax)
     t_lo, t_hi = theta0_deg_range
     deg = np.linspace(t_lo, t_hi, n[0] + 2)[1:-1]

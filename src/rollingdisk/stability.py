@@ -85,6 +85,12 @@ class Stability:
     def growth_rate(self) -> float | None:
         return None if self.stable else math.sqrt(-self.varpi2) + 0.0
 
+    def as_dict(self) -> dict:
+        """``varpi2, stable, varpi, period, growth_rate`` (``varpi`` None when unstable)."""
+        return {"varpi2": self.varpi2, "stable": self.stable,
+                "varpi": self.varpi if self.stable else None, "period": self.period,
+                "growth_rate": self.growth_rate}
+
 
 # ---------------------------------------------------------------------------------------
 # closed forms in (omega20, omega30): eqs. (40)-(41) and (51)
