@@ -323,9 +323,9 @@ def simulate(disk: Disk, ground: str, y0, t_span: Sequence[float], *,
     first_step : float, optional
         Initial step, ``> 0``; chosen automatically by default.
     t_eval : array_like, optional
-        Increasing times within ``t_span`` at which to store the state (as in solve_ivp);
-        by default every accepted step is stored.  The event point, if a guard fires, is
-        appended.
+        Increasing times within ``t_span`` at which to store the state (as in solve_ivp,
+        from the dense output of DOP853); by default every accepted step is stored.  The
+        event point, if a guard fires, is appended.
     events : callable or list of callables, optional
         User events ``event(t, y)`` with optional ``terminal`` and ``direction``
         attributes, as in solve_ivp (scipy path).  A terminal user event ends the run
@@ -335,8 +335,9 @@ def simulate(disk: Disk, ground: str, y0, t_span: Sequence[float], *,
     max_steps : int
         The compiled integrator gives up (status ``"failed"``) after this many steps.
     progress : callable, optional
-        ``progress(fraction)`` called as the run advances (the compiled integrator then
-        runs in 100 chunks of time).
+        ``progress(fraction)`` called as the run advances, at most 100 times (the compiled
+        integrator pauses after the first step past each hundredth of ``t_span``; it takes
+        the same steps and gives the same output as without ``progress``).
 
     Returns
     -------
