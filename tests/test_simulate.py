@@ -32,7 +32,8 @@ from rollingdisk.simulate import (
     jit_compile,
     oscillation_frequency,
 )
-from steady_numeric import steady_omega20, steady_state, varpi2_numeric
+from rollingdisk.steady import steady_motion, straight_line
+from steady_numeric import steady_omega20, varpi2_numeric
 
 THETA = {"rough": 3, "smooth": 5}
 
@@ -42,22 +43,17 @@ def compiled():
     return jit_compile()
 
 
-class FakeSteady:
-    """Duck-typed SteadyMotion (the steady module is written in parallel)."""
-
-    def __init__(self, ground, h, theta0, omega30, omega20=None):
-        self.ground, self.h, self.theta0, self.omega30 = ground, h, theta0, omega30
-        self.omega20 = steady_omega20(h, ground, theta0, omega30) if omega20 is None else omega20
-
-    def initial_state(self, psi0=0.0, phi0=0.0):
-        y = steady_state(self.h, self.ground, self.theta0, self.omega30, self.omega20)
-        y[2 if self.ground == "rough" else 4] = psi0
-        y[4 if self.ground == "rough" else 6] = phi0
-        return y
+def circle(ground, h, theta0, omega30):
+    """The steady circle of rollingdisk.steady with spin component omega30 (eq. 3)."""
+    m = steady_motion(Disk(h=h), ground, theta0, Omega0=omega30 / math.cos(theta0))
+    # its omega20 makes d omega1/dt = 0, found independently (tests/steady_numeric.py)
+    assert m.omega20 == pytest.approx(steady_omega20(h, ground, theta0, m.omega30),
+                                      rel=1e-10, abs=1e-12)
+    return m
 
 
 def straight(ground, h, omega20):
-    return FakeSteady(ground, h, math.atan(h), 0.0, omega20)
+    return straight_line(Disk(h=h), ground, omega20)
 
 
 # (h, theta0, omega30): thin and thick disks, small and large theta0, both spin senses
@@ -82,7 +78,7 @@ UNSTABLE = {
 def _motions(table, straight_table):
     out = []
     for ground, rows in table.items():
-        out += [pytest.param(FakeSteady(ground, *row), id=f"{ground}-{row}") for row in rows]
+        out += [pytest.param(circle(ground, *row), id=f"{ground}-{row}") for row in rows]
     for ground, rows in straight_table.items():
         out += [pytest.param(straight(ground, *row), id=f"{ground}-straight-{row}")
                 for row in rows]
@@ -116,7 +112,7 @@ def test_frequency_matches_varpi_over_random_stable_motions(ground):
         h = float(rng.choice([0.0, rng.uniform(0, 3)]))
         theta0 = float(rng.uniform(0.02, 1.45) * rng.choice([-1, 1]))
         omega30 = float(rng.uniform(0.3, 6) * rng.choice([-1, 1]))
-        m = FakeSteady(ground, h, theta0, omega30)
+        m = circle(ground, h, theta0, omega30)
         v2 = _varpi2(m)
         if not 0.1 < v2 < 400:
             continue
@@ -142,9 +138,9 @@ def test_growth_rate_of_unstable_motion_is_sqrt_minus_varpi2(motion):
 
 
 @pytest.mark.parametrize("motion", [
-    FakeSteady("rough", 0.3, 0.8, 1.5), FakeSteady("rough", 0.0, 0.3, 4.0),
-    FakeSteady("rough", 0.866, 1.3, 4.0), FakeSteady("rough", 2.0, 1.3, 0.5),
-    FakeSteady("smooth", 0.3, 0.8, 0.5), FakeSteady("smooth", 2.0, 0.3, 4.0)],
+    circle("rough", 0.3, 0.8, 1.5), circle("rough", 0.0, 0.3, 4.0),
+    circle("rough", 0.866, 1.3, 4.0), circle("rough", 2.0, 1.3, 0.5),
+    circle("smooth", 0.3, 0.8, 0.5), circle("smooth", 2.0, 0.3, 4.0)],
     ids=lambda m: f"{m.ground}-{m.h}-{m.theta0}-{m.omega30}")
 def test_unperturbed_steady_motion_stays_steady_on_circles(motion):
     tr = simulate_steady(motion, 100.0, psi0=0.4)
@@ -174,9 +170,9 @@ def test_unperturbed_steady_motion_stays_steady_on_circles(motion):
 
 
 # ---------------------------------------------------------------------------- accuracy
-@pytest.mark.parametrize("motion", [FakeSteady("rough", 0.1, 0.3, 3.0),
-                                    FakeSteady("rough", 0.866, 1.0, 1.5),
-                                    FakeSteady("smooth", 0.3, 0.8, 0.5)],
+@pytest.mark.parametrize("motion", [circle("rough", 0.1, 0.3, 3.0),
+                                    circle("rough", 0.866, 1.0, 1.5),
+                                    circle("smooth", 0.3, 0.8, 0.5)],
                          ids=["rough-thin", "rough-thick", "smooth"])
 def test_default_tolerances_keep_energy_drift_below_1e9_over_1000(motion):
     tr = simulate_steady(motion, 1000.0, perturb=1e-2)
@@ -245,13 +241,49 @@ def test_progress_chunks_give_the_same_motion():
     a = simulate(disk, "rough", y0, (0, 50), progress=seen.append)
     b = simulate(disk, "rough", y0, (0, 50))
     assert a.status == b.status == "completed"
-    assert seen[-1] == pytest.approx(1.0) and len(seen) == 100
+    assert seen[-1] == pytest.approx(1.0) and 10 < len(seen) <= 100
+    assert np.all(np.diff(seen) > 0)
     assert np.all(np.diff(a.t) > 0)
     np.testing.assert_allclose(a.y[:, -1], b.y[:, -1], rtol=1e-8, atol=1e-8)
     te = np.linspace(0, 50, 11)
     c = simulate(disk, "rough", y0, (0, 50), t_eval=te, progress=lambda f: None)
     np.testing.assert_array_equal(c.t, te)
     np.testing.assert_allclose(c.y[:, -1], b.y[:, -1], rtol=1e-8, atol=1e-8)
+
+
+@pytest.mark.parametrize("t_eval", [None, np.linspace(0, 100, 37)], ids=["steps", "t_eval"])
+def test_progress_takes_exactly_the_steps_of_a_plain_run(t_eval):
+    # the chunks for progress() once restarted from the last output point, re-integrating
+    # the tail of each chunk (1583 instead of 1302 steps here)
+    disk = Disk(h=0.2)
+    y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
+    a = simulate(disk, "rough", y0, (0, 100), t_eval=t_eval)
+    b = simulate(disk, "rough", y0, (0, 100), t_eval=t_eval, progress=lambda f: None)
+    assert a.status == b.status == "completed"
+    assert a.n_steps == b.n_steps
+    assert b.n_rhs - a.n_rhs <= 100  # f once more at each pause, nothing else
+    np.testing.assert_array_equal(a.t, b.t)
+    np.testing.assert_array_equal(a.y, b.y)
+
+
+def test_t_eval_output_is_the_dense_output_of_scipys_dop853():
+    from scipy.integrate import solve_ivp
+
+    from rollingdisk import equations_of_motion
+
+    disk = Disk(h=0.2)
+    y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
+    te = np.linspace(0, 100, 2001)
+    a = simulate(disk, "rough", y0, (0, 100), t_eval=te)
+    ref = solve_ivp(equations_of_motion(disk, "rough"), (0, 100), y0, method="DOP853",
+                    rtol=DEFAULT_RTOL, atol=DEFAULT_ATOL, t_eval=te)
+    np.testing.assert_array_equal(a.t, te)
+    scale = np.max(np.abs(ref.y), axis=1, keepdims=True)
+    assert np.max(np.abs(a.y - ref.y) / scale) < 1e-11
+    # dense output: 3 evaluations per step, not a 12-stage step per requested time
+    b = simulate(disk, "rough", y0, (0, 100))
+    assert a.n_steps == b.n_steps
+    assert a.n_rhs <= b.n_rhs + 3 * b.n_steps < b.n_rhs + 12 * te.size
 
 
 def test_thin_disk_passes_through_theta_zero():
@@ -333,6 +365,42 @@ def test_user_events_run_through_scipy():
         simulate(Disk(h=0.1), "rough", y0, (0, 20), events=half, method="dop853")
 
 
+def _time_event(at, terminal):
+    def event(t, y):
+        return t - at
+
+    event.terminal = terminal
+    return event
+
+
+@pytest.mark.parametrize("t_eval", [None, np.linspace(0, 20, 81)], ids=["steps", "t_eval"])
+def test_only_a_terminal_user_event_stops_the_run(t_eval):
+    # a non-terminal event was once reported as the one that stopped the run, and its time
+    # appended to t after the end
+    y0 = [0, 0, 0, 0.3, 0, 0.1, 2.0, 0.5]
+    tr = simulate(Disk(h=0.1), "rough", y0, (0, 20), t_eval=t_eval,
+                  events=[_time_event(1.0, False), _time_event(3.0, True)])
+    assert tr.status == "completed"
+    assert np.all(np.diff(tr.t) > 0)
+    assert tr.t[-1] == pytest.approx(3.0, abs=1e-12)
+    assert "stopped by user event 1 at t = 3" in tr.message
+    assert len(tr.t_events) == 2
+    np.testing.assert_allclose(tr.t_events[0], [1.0], atol=1e-12)
+    np.testing.assert_allclose(tr.t_events[1], [3.0], atol=1e-12)
+
+
+def test_a_user_event_with_a_terminal_count_stops_at_that_count():
+    def wave(t, y):
+        return math.sin(math.pi * (t + 0.5))  # zero at t = 0.5, 1.5, 2.5, ...
+
+    wave.terminal = 2  # solve_ivp: stop at the 2nd occurrence
+    y0 = [0, 0, 0, 0.3, 0, 0.1, 2.0, 0.5]
+    tr = simulate(Disk(h=0.1), "rough", y0, (0, 20), events=[_time_event(1.0, False), wave])
+    assert tr.t[-1] == pytest.approx(1.5, abs=1e-10)
+    assert "user event 1 at t = 1.5" in tr.message
+    np.testing.assert_allclose(tr.t_events[1], [0.5, 1.5], atol=1e-10)
+
+
 # ---------------------------------------------------------------------------- measurements
 def test_fit_circle_is_exact_on_a_circle():
     a = np.linspace(0.3, 2.0, 17)
@@ -368,12 +436,34 @@ def test_trajectory_is_frozen_and_named():
 
 
 def test_simulate_steady_perturbs_theta_only():
-    m = FakeSteady("rough", 0.1, 0.3, 3.0)
+    m = circle("rough", 0.1, 0.3, 3.0)
     tr = simulate_steady(m, 1.0, perturb=1e-3)
     y0 = m.initial_state()
     y0[3] += 1e-3
     np.testing.assert_array_equal(tr.y[:, 0], y0)
     assert tr.theta_ref == 0.3 and tr.motion is m
+    assert tr.disk == m.disk
+
+
+def test_simulate_steady_keeps_the_disk_of_the_motion():
+    from types import SimpleNamespace
+
+    m = circle("rough", 0.1, 0.3, 3.0)
+    disk = Disk(h=0.1, radius=0.05, mass=0.2)  # a physical disk: SI conversions need it
+    wrapped = SimpleNamespace(ground=m.ground, h=m.h, theta0=m.theta0, disk=disk,
+                              initial_state=m.initial_state)
+    tr = simulate_steady(wrapped, 1.0, perturb=1e-3)
+    assert tr.disk is disk
+
+
+@pytest.mark.parametrize("theta0,perturb", [(0.3, -0.3), (0.3, 1.3), (-1.2, -0.4)])
+def test_simulate_steady_names_perturb_when_it_leaves_the_model(theta0, perturb):
+    m = circle("rough", 0.1, theta0, 3.0)
+    with pytest.raises(ValueError, match=r"^perturb must lie in \(") as info:
+        simulate_steady(m, 1.0, perturb=perturb)
+    assert "y0" not in str(info.value)
+    # kick changes omega1 only: theta(0) stays admissible
+    assert simulate_steady(m, 0.1, kick=5.0).status in ("completed", "lift-off")
 
 
 # ---------------------------------------------------------------------------- validation
@@ -409,11 +499,29 @@ def test_simulate_steady_rejects_non_motions():
     with pytest.raises(ValueError, match="SteadyMotion"):
         simulate_steady(object(), 1.0)
     with pytest.raises(ValueError, match="t_end"):
-        simulate_steady(FakeSteady("rough", 0.1, 0.3, 3.0), -1.0)
+        simulate_steady(circle("rough", 0.1, 0.3, 3.0), -1.0)
 
 
-def test_default_tolerances_are_documented_values():
-    assert 0 < DEFAULT_RTOL <= 1e-10 and 0 < DEFAULT_ATOL <= 1e-10
+def test_missing_scipy_dop853_coefficients_give_a_clear_import_error():
+    import os
+    import subprocess
+    import sys
+
+    import rollingdisk
+
+    code = ("import sys, scipy.integrate._ivp as ivp\n"
+            "del ivp.dop853_coefficients\n"
+            "sys.modules['scipy.integrate._ivp.dop853_coefficients'] = None\n"
+            "try:\n"
+            "    import rollingdisk._numba_core\n"
+            "except ImportError as exc:\n"
+            "    print(exc)\n")
+    src = os.path.dirname(os.path.dirname(rollingdisk.__file__))
+    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=dict(os.environ, PYTHONPATH=src))
+    assert res.returncode == 0, res.stderr
+    assert "scipy.integrate._ivp.dop853_coefficients" in res.stdout
+    assert "install a scipy version" in res.stdout and "method='scipy'" in res.stdout
 
 
 def test_import_is_light_and_the_core_needs_no_sympy_or_matplotlib():

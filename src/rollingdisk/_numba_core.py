@@ -13,7 +13,9 @@ as ``scipy.integrate.solve_ivp(method="DOP853")``, so both take the same steps. 
 events are checked at the end of every accepted step and located by the Illinois variant of
 regula falsi on the step length, re-integrating one DOP853 step from the start of the
 step for each trial (a shorter step of the same method is at least as accurate as the
-accepted one).  Output at requested times ``t_eval`` is obtained the same way.
+accepted one).  Output at requested times ``t_eval`` comes from the 7th-degree dense
+output of DOP853 (the interpolant of scipy's ``DOP853.dense_output``, 3 extra right-hand
+side evaluations per step that holds requested times).
 """
 
 from __future__ import annotations
@@ -22,7 +24,22 @@ import types
 
 import numba
 import numpy as np
-from scipy.integrate._ivp import dop853_coefficients as _dop
+
+try:  # a private scipy module: the coefficients of scipy's own DOP853 (scipy >= 1.4)
+    from scipy.integrate._ivp import dop853_coefficients as _dop
+
+    for _name in ("N_STAGES", "N_STAGES_EXTENDED", "INTERPOLATOR_POWER", "A", "B", "C", "E3",
+                  "E5", "D"):
+        getattr(_dop, _name)
+except (ImportError, AttributeError) as _exc:  # pragma: no cover - depends on scipy
+    import scipy
+
+    raise ImportError(
+        "rollingdisk's compiled integrator takes the DOP853 coefficients from scipy's "
+        "private module scipy.integrate._ivp.dop853_coefficients (present in scipy 1.4 to "
+        f"at least 1.17), which scipy {scipy.__version__} does not provide as expected "
+        f"({_exc}); install a scipy version that has it, or use simulate(method='scipy')"
+    ) from _exc
 
 from . import equations as _eq
 
@@ -55,6 +72,11 @@ _B = np.ascontiguousarray(_dop.B)
 _C = np.ascontiguousarray(_dop.C[:_NS])
 _E3 = np.ascontiguousarray(_dop.E3)
 _E5 = np.ascontiguousarray(_dop.E5)
+# dense output: 3 extra stages (rows N_STAGES + 1 ... of A and C) and the matrix D
+_NSX = _dop.N_STAGES_EXTENDED  # 16
+_NF = _dop.INTERPOLATOR_POWER  # 7
+_AX = np.ascontiguousarray(_dop.A[_NS + 1:_NSX, :_NSX])
+_D = np.ascontiguousarray(_dop.D)
 _SAFETY = 0.9
 _MIN_FACTOR = 0.2
 _MAX_FACTOR = 10.0
@@ -113,6 +135,49 @@ def _step(rough, h, t, y, f, dt, K, ytmp, y_new, f_new):
 
 
 @numba.njit(cache=True)
+def _dense_coefficients(rough, h, y, y_new, f_new, dt, K, ytmp, F):
+    """Coefficients F of the DOP853 interpolant on an accepted step (t, y) -> (t + dt, y_new).
+
+    ``K`` holds the stages of the step (rows 0 ... N_STAGES, as left by :func:`_step`); the
+    3 extra stages go to its rows N_STAGES + 1 ... (3 right-hand-side evaluations).  The
+    same formulas as scipy's ``DOP853._dense_output_impl`` (the right-hand side does not
+    depend on t, so the extra nodes ``C_EXTRA`` do not enter).
+    """
+    n = y.shape[0]
+    for s in range(_NS + 1, _NSX):
+        for i in range(n):
+            acc = 0.0
+            for j in range(s):
+                acc += _AX[s - _NS - 1, j] * K[j, i]
+            ytmp[i] = y[i] + dt * acc
+        _rhs(rough, h, ytmp, K[s])
+    for i in range(n):
+        dy = y_new[i] - y[i]
+        F[0, i] = dy
+        F[1, i] = dt * K[0, i] - dy
+        F[2, i] = 2.0 * dy - dt * (f_new[i] + K[0, i])
+        for r in range(_NF - 3):
+            acc = 0.0
+            for j in range(_NSX):
+                acc += _D[r, j] * K[j, i]
+            F[3 + r, i] = dt * acc
+
+
+@numba.njit(cache=True)
+def _dense_value(y, F, x, out):
+    """The interpolant at the fraction x of the step (scipy's ``Dop853DenseOutput``)."""
+    for i in range(y.shape[0]):
+        acc = 0.0
+        for r in range(_NF - 1, -1, -1):
+            acc += F[r, i]
+            if (_NF - 1 - r) % 2 == 0:
+                acc *= x
+            else:
+                acc *= 1.0 - x
+        out[i] = y[i] + acc
+
+
+@numba.njit(cache=True)
 def _error_norm(y, y_new, K, dt, rtol, atol):
     n = y.shape[0]
     e5 = 0.0
@@ -168,15 +233,21 @@ def initial_step(rough, h, t0, y0, f0, t_bound, max_step, rtol, atol):
 
 
 @numba.njit(cache=True)
+def _fired(k, g_old, g_new):
+    """True if guard k fired in the step from guard values g_old to g_new.
+
+    theta (k = 1) fires when it reaches 0 or changes sign; the others when they reach 0.
+    """
+    if k == 1:
+        return g_new[1] == 0.0 or (g_old[1] > 0.0) != (g_new[1] > 0.0)
+    return g_new[k] <= 0.0
+
+
+@numba.njit(cache=True)
 def _triggered(g_old, g_new, use):
     """Index of a guard that fired in the step (first in order), or -1."""
     for k in range(3):
-        if not use[k]:
-            continue
-        if k == 1:
-            if g_new[1] == 0.0 or (g_old[1] > 0.0) != (g_new[1] > 0.0):
-                return k
-        elif g_new[k] <= 0.0:
+        if use[k] and _fired(k, g_old, g_new):
             return k
     return -1
 
@@ -206,15 +277,11 @@ def _locate(rough, h, t, y, f, dt_hi, k, sign1, K, ytmp, y_try, f_try, g, xtol):
     n_rhs += _NS
     _guards(rough, h, y_try, g)
     gb = _guard_value(k, g, sign1)
-    if not (gb <= 0.0) or ga <= 0.0:
-        # nothing to bracket: the guard is non-positive at the start, or not at the end
-        if ga <= 0.0:
-            for i in range(y.shape[0]):
-                y_try[i] = y[i]
-            return 0.0, n_rhs
-        return b, n_rhs
+    if ga > 0.0 and not (gb <= 0.0):
+        return b, n_rhs  # nothing to bracket: the guard is positive at the end
     side = 0
-    for _ in range(200):
+    # (no bracket either when the guard is non-positive at the start: a = 0 below)
+    for _ in range(200 if ga > 0.0 else 0):
         if abs(b - a) <= xtol:
             break
         c = (a * gb - b * ga) / (gb - ga)
@@ -246,16 +313,24 @@ def _locate(rough, h, t, y, f, dt_hi, k, sign1, K, ytmp, y_try, f_try, g, xtol):
 
 
 @numba.njit(cache=True)
-def integrate(rough, h, t0, y0, t_end, rtol, atol, max_step, first_step, use_guards,
+def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atol, max_step, first_step, use_guards,
               t_eval, has_t_eval, max_steps):
     """Integrate from (t0, y0) to t_end, stopping at the first guard event.
 
-    Returns ``(ts, ys, n_steps, n_rhs, status, event, h_last)`` where ``ts, ys`` are the
-    accepted steps (or the values at ``t_eval``) followed by the event point if one fired,
-    ``status`` one of the codes above, ``event`` the index of the guard that fired or -1.
+    Pauses (status RUNNING) after the first accepted step that reaches ``t_pause < t_end``;
+    steps are never shortened to land on ``t_pause``, so a run continued from the returned
+    ``(t_last, y_last)`` with ``first_step = h_next`` takes the very steps of an
+    uninterrupted run.
+
+    Returns ``(ts, ys, n_steps, n_rhs, status, event, h_next, t_last, y_last)`` where
+    ``ts, ys`` are the accepted steps (or the values at ``t_eval``) followed by the event
+    point if one fired, ``status`` one of the codes above, ``event`` the index of the
+    guard that fired or -1, ``h_next`` the step size to try next and ``(t_last, y_last)``
+    the end of the last accepted step.
     """
     n = y0.shape[0]
-    K = np.empty((_NS + 1, n))
+    K = np.empty((_NSX, n))
+    F = np.empty((_NF, n))
     ytmp = np.empty(n)
     y = y0.copy()
     f = np.empty(n)
@@ -294,7 +369,8 @@ def integrate(rough, h, t0, y0, t_end, rtol, atol, max_step, first_step, use_gua
                 ts[m] = t
                 ys[m] = y
                 m += 1
-            return ts[:m], ys[:m], n_steps, n_rhs, LIFT_OFF if k == 0 else FELL_FLAT, k, 0.0
+            return (ts[:m], ys[:m], n_steps, n_rhs, LIFT_OFF if k == 0 else FELL_FLAT, k,
+                    0.0, t, y)
     sign1 = 1.0 if g_old[1] > 0.0 else -1.0
     _rhs(rough, h, y, f)
     n_rhs += 1
@@ -355,6 +431,12 @@ def integrate(rough, h, t0, y0, t_end, rtol, atol, max_step, first_step, use_gua
         if status == FAILED:
             break
         n_steps += 1
+        # dense output of the whole step (needed unless the next requested time is its
+        # end), computed before event location reuses K and y_new
+        dense = has_t_eval and ie < t_eval.shape[0] and t_eval[ie] < t_new
+        if dense:
+            _dense_coefficients(rough, h, y, y_new, f_new, dt, K, ytmp, F)
+            n_rhs += _NSX - _NS - 1
         _guards(rough, h, y_new, g_new)
         k = _triggered(g_old, g_new, use_guards)
         t_stop = t_new
@@ -363,11 +445,7 @@ def integrate(rough, h, t0, y0, t_end, rtol, atol, max_step, first_step, use_gua
             best = dt
             kbest = -1
             for kk in range(3):
-                if not use_guards[kk]:
-                    continue
-                fired = (g_new[1] == 0.0 or (g_old[1] > 0.0) != (g_new[1] > 0.0)) \
-                    if kk == 1 else g_new[kk] <= 0.0
-                if not fired:
+                if not (use_guards[kk] and _fired(kk, g_old, g_new)):
                     continue
                 xtol = 4.0 * abs(np.nextafter(t + dt, np.inf) - (t + dt))
                 dtk, nr = _locate(rough, h, t, y, f, dt, kk, sign1, K, ytmp, y_try, f_try,
@@ -392,8 +470,7 @@ def integrate(rough, h, t0, y0, t_end, rtol, atol, max_step, first_step, use_gua
                 if t_eval[ie] == t_stop:
                     ys[m] = y_new
                 else:
-                    _step(rough, h, t, y, f, t_eval[ie] - t, K, ytmp, y_try, f_try)
-                    n_rhs += _NS
+                    _dense_value(y, F, (t_eval[ie] - t) / dt, y_try)
                     ys[m] = y_try
                 ts[m] = t_eval[ie]
                 m += 1
@@ -423,14 +500,16 @@ def integrate(rough, h, t0, y0, t_end, rtol, atol, max_step, first_step, use_gua
         for i in range(3):
             g_old[i] = g_new[i]
         h_abs = h_next
-    return ts[:m], ys[:m], n_steps, n_rhs, status, event, h_abs
+        if t_pause <= t < t_end:
+            break  # paused, status RUNNING
+    return ts[:m], ys[:m], n_steps, n_rhs, status, event, h_abs, t, y
 
 
 # ------------------------------------------------------------------ stale-cache guard
 _DISPATCHERS = ("_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs",
                 "_smooth_rhs", "_reduced_state", "_rhs", "_normal_force", "_guards", "_step",
-                "_error_norm",
-                "_rms", "initial_step", "_triggered", "_guard_value", "_locate", "integrate")
+                "_dense_coefficients", "_dense_value", "_error_norm", "_rms", "initial_step",
+                "_fired", "_triggered", "_guard_value", "_locate", "integrate")
 
 
 def rhs_matches_kernels() -> bool:

@@ -26,6 +26,7 @@ Measurements: :func:`energy_drift`, :func:`oscillation_frequency`, :func:`growth
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from collections.abc import Callable, Sequence
@@ -224,7 +225,20 @@ def jit_compile() -> float:
     """Import (and on first use compile) the numba integrator; return the seconds it took.
 
     The compiled code is cached on disk (``numba`` ``cache=True``), so after the first
-    run this is the time to load it.  :func:`simulate` calls this itself.
+    run this is the time to load it.  A cache left stale by an edit of the kernels in
+    :mod:`rollingdisk.equations` (eqs. 11, 38, 49) is detected and recompiled.
+    :func:`simulate` calls this itself.
+
+    Returns
+    -------
+    float
+        Seconds spent importing, compiling or loading, and checking the compiled code on
+        the first call; the same figure again on later calls (nothing is redone).
+
+    Raises
+    ------
+    ImportError
+        If numba is missing, or scipy lacks the DOP853 coefficients the core takes from it.
     """
     global _core, _compile_time
     if _core is None:
@@ -235,9 +249,9 @@ def jit_compile() -> float:
         ys = np.array([0.0, 0.0, 0.0, 0.0, 0.0, 0.3, 0.0, 0.0, 1.0, 0.5])
         guards = np.ones(3, dtype=np.bool_)
         for rough, y0 in ((True, y), (False, ys)):
-            core.integrate(rough, 0.1, 0.0, y0, 1e-3, 1e-8, 1e-8, np.inf, 0.0, guards,
+            core.integrate(rough, 0.1, 0.0, y0, 1e-3, 1e-3, 1e-8, 1e-8, np.inf, 0.0, guards,
                            np.zeros(1), False, 10)
-            core.integrate(rough, 0.1, 0.0, y0, 1e-3, 1e-8, 1e-8, np.inf, 0.0, guards,
+            core.integrate(rough, 0.1, 0.0, y0, 1e-3, 1e-3, 1e-8, 1e-8, np.inf, 0.0, guards,
                            np.array([5e-4]), True, 10)
         if not core.rhs_matches_kernels():  # a stale on-disk cache (see _numba_core)
             core.recompile_all()
@@ -250,11 +264,6 @@ def jit_compile() -> float:
 
 
 # ---------------------------------------------------------------------------- validation
-def _check_tol(name, value):
-    x = check_real(name, value, low=0.0, low_open=True)
-    return x
-
-
 def _check_state(disk: Disk, ground: str, y0) -> np.ndarray:
     names = state_names(ground)
     try:
@@ -314,9 +323,9 @@ def simulate(disk: Disk, ground: str, y0, t_span: Sequence[float], *,
     first_step : float, optional
         Initial step, ``> 0``; chosen automatically by default.
     t_eval : array_like, optional
-        Increasing times within ``t_span`` at which to store the state (as in solve_ivp);
-        by default every accepted step is stored.  The event point, if a guard fires, is
-        appended.
+        Increasing times within ``t_span`` at which to store the state (as in solve_ivp,
+        from the dense output of DOP853); by default every accepted step is stored.  The
+        event point, if a guard fires, is appended.
     events : callable or list of callables, optional
         User events ``event(t, y)`` with optional ``terminal`` and ``direction``
         attributes, as in solve_ivp (scipy path).  A terminal user event ends the run
@@ -326,8 +335,9 @@ def simulate(disk: Disk, ground: str, y0, t_span: Sequence[float], *,
     max_steps : int
         The compiled integrator gives up (status ``"failed"``) after this many steps.
     progress : callable, optional
-        ``progress(fraction)`` called as the run advances (the compiled integrator then
-        runs in 100 chunks of time).
+        ``progress(fraction)`` called as the run advances, at most 100 times (the compiled
+        integrator pauses after the first step past each hundredth of ``t_span``; it takes
+        the same steps and gives the same output as without ``progress``).
 
     Returns
     -------
@@ -351,8 +361,8 @@ def simulate(disk: Disk, ground: str, y0, t_span: Sequence[float], *,
     if not (math.isfinite(t0) and math.isfinite(t1) and t1 > t0):
         raise ValueError(f"t_span must be a pair (t0, t1) of finite numbers with t1 > t0, "
                          f"got {t_span!r}")
-    rtol = _check_tol("rtol", rtol)
-    atol = _check_tol("atol", atol)
+    rtol = check_real("rtol", rtol, low=0.0, low_open=True)
+    atol = check_real("atol", atol, low=0.0, low_open=True)
     max_step = check_real("max_step", max_step, low=0.0, low_open=True) \
         if max_step != math.inf else math.inf
     first_step = None if first_step is None else check_real(
@@ -406,49 +416,39 @@ def _simulate_numba(disk, ground, y, t0, t1, rtol, atol, max_step, first_step, t
     has_t_eval = t_eval is not None
     te = t_eval if has_t_eval else np.zeros(1)
     start = time.perf_counter()
+    first = 0.0 if first_step is None else first_step
     if progress is None:
-        ts, ys, n_steps, n_rhs, code, event, _ = core.integrate(
-            rough, disk.h, t0, y, t1, rtol, atol, max_step,
-            0.0 if first_step is None else first_step, use, te, has_t_eval, max_steps)
+        ts, ys, n_steps, n_rhs, code, event, *_ = core.integrate(
+            rough, disk.h, t0, y, t1, t1, rtol, atol, max_step, first, use, te, has_t_eval,
+            max_steps)
     else:
-        # chunks of time, carrying the step size over so that the steps barely change
+        # pause after the first step past each of 100 marks in time and go on from the end
+        # of that step with the step size it chose: the very steps of a run without
+        # progress (only f at each pause is evaluated once more)
         t_parts, y_parts = [], []
         n_steps = n_rhs = 0
-        h_next = 0.0 if first_step is None else first_step
+        h_next = first
         tc, yc = t0, y
         n_chunks = 100
-        code, event = 1, -1
         for i in range(1, n_chunks + 1):
             tb = t1 if i == n_chunks else t0 + (t1 - t0) * i / n_chunks
             if tb <= tc:
                 continue
-            if has_t_eval:
-                sel = te[(te > tc) & (te <= tb)] if t_parts else te[(te >= tc) & (te <= tb)]
-                te_c = sel if sel.size else np.zeros(1)
-                has_c = sel.size > 0
-            else:
-                te_c, has_c = np.zeros(1), False
-            ts_c, ys_c, ns, nr, code, event, h_next = core.integrate(
-                rough, disk.h, tc, yc, tb, rtol, atol, max_step, h_next, use, te_c, has_c,
-                max(max_steps - n_steps, 1))
+            later = bool(t_parts)
+            # requested times at tc were output by the previous chunk
+            te_c = te[te > tc] if later and has_t_eval else te
+            ts_c, ys_c, ns, nr, code, event, h_next, tc, yc = core.integrate(
+                rough, disk.h, tc, yc, t1, tb, rtol, atol, max_step, h_next, use, te_c,
+                has_t_eval, max_steps - n_steps)
             n_steps += ns
             n_rhs += nr
-            if has_t_eval:
-                if has_c:  # the requested times, and the event point if a guard fired
-                    keep = ts_c > tc if t_parts else np.ones(ts_c.size, bool)
-                else:  # no requested time in this chunk: only an event point
-                    keep = np.zeros(ts_c.size, bool)
-                    if code != 1:
-                        keep[-1] = True
-                t_parts.append(ts_c[keep])
-                y_parts.append(ys_c[keep])
-            else:
-                first = 1 if t_parts else 0
-                t_parts.append(ts_c[first:])
-                y_parts.append(ys_c[first:])
-            tc, yc = float(ts_c[-1]), np.array(ys_c[-1])
-            progress((tc - t0) / (t1 - t0))
-            if code != 1:
+            # without t_eval a later chunk starts with the previous one's last point
+            skip = 1 if later and not has_t_eval else 0
+            t_parts.append(ts_c[skip:])
+            y_parts.append(ys_c[skip:])
+            t_now = float(ts_c[-1]) if event >= 0 else tc  # the event point, if one fired
+            progress((t_now - t0) / (t1 - t0))
+            if code != core.RUNNING:
                 break
         ts = np.concatenate(t_parts)
         ys = np.concatenate(y_parts)
@@ -523,9 +523,14 @@ def _simulate_scipy(disk, ground, y, t0, t1, rtol, atol, max_step, first_step, t
     if sol.status == -1:
         status, message = "failed", f"failed: {sol.message}"
     elif sol.status == 1:
-        fired = [(sol.t_events[i][-1], i) for i in range(len(sol.t_events))
-                 if len(sol.t_events[i]) and (i >= len(guard_list)
-                                              or getattr(guard_list[i], "terminal", False))]
+        # the event that stopped the run: a terminal one (``terminal`` True, or a count as
+        # in solve_ivp) that occurred as often as it allows; non-terminal events only record
+        every = guard_list + user
+        fired = []
+        for i, ev in enumerate(every):
+            allowed = int(getattr(ev, "terminal", False) or 0)
+            if allowed > 0 and len(sol.t_events[i]) >= allowed:
+                fired.append((sol.t_events[i][-1], i))
         t_hit, i_hit = min(fired)
         if t_hit not in ts:
             ts = np.append(ts, t_hit)
@@ -588,22 +593,42 @@ def simulate_steady(motion, t_end: float, *, perturb: float = 0.0, kick: float =
     t_end = check_real("t_end", t_end, low=0.0, low_open=True)
     perturb = check_real("perturb", perturb)
     kick = check_real("kick", kick)
-    disk = Disk(h=float(motion.h))
+    disk = getattr(motion, "disk", None)
+    if not isinstance(disk, Disk):  # keep the motion's disk (and its physical scale)
+        disk = Disk(h=float(motion.h))
+    i_theta = state_index(motion.ground, "theta")
     y0 = np.array(motion.initial_state(psi0, phi0), dtype=float)
-    y0[state_index(motion.ground, "theta")] += perturb
+    theta0 = float(y0[i_theta])
+    theta = theta0 + perturb
+    if abs(theta) >= 0.5 * math.pi or (disk.h > 0 and theta == 0.0):
+        allowed = f"({-0.5 * math.pi - theta0:.6g}, {0.5 * math.pi - theta0:.6g})"
+        if disk.h > 0:
+            allowed += f" other than {-theta0:.6g} (theta = 0 is outside the model for h > 0)"
+        raise ValueError(f"perturb must lie in {allowed}, so that theta(0) = theta0 + perturb "
+                         f"stays in (-pi/2, pi/2); got perturb = {perturb!r}, theta(0) = "
+                         f"{theta!r}")
+    y0[i_theta] = theta
     y0[state_index(motion.ground, "omega1")] += kick
     tr = simulate(disk, motion.ground, y0, (0.0, t_end), **options)
-    object.__setattr__(tr, "theta_ref", float(motion.theta0))
-    object.__setattr__(tr, "motion", motion)
-    return tr
+    return dataclasses.replace(tr, theta_ref=float(motion.theta0), motion=motion)
 
 
 # ---------------------------------------------------------------------------- measurements
 def energy_drift(traj: Trajectory) -> float:
-    """Largest relative change of the energy (eq. 13) along ``traj``: ``max |E - E(0)| / |E(0)|``.
+    """Largest relative change of the energy (eq. 13) along ``traj``.
 
-    The equations conserve energy on both grounds (eq. 12 with no slip or no friction), so
-    this measures the integration error.
+    The equations conserve energy on both grounds (eq. 12: the contact force does no work
+    without slip or without friction), so this measures the integration error.
+
+    Parameters
+    ----------
+    traj : Trajectory
+        A simulated motion.
+
+    Returns
+    -------
+    float
+        ``max |E(t) - E(t0)| / |E(t0)|`` over the stored points, ``E`` of eq. (13).
     """
     E = traj.E
     return float(np.max(np.abs(E - E[0])) / max(abs(E[0]), np.finfo(float).tiny))
@@ -651,7 +676,19 @@ def oscillation_frequency(traj: Trajectory, *, min_periods: int = 2) -> float | 
     least-squares slope of the crossing times against their index, so the offset ``c``
     does not bias it.  Compare with ``varpi`` of eq. (40) / (51).
 
-    Returns None if ``theta`` crosses its mean upward fewer than ``min_periods + 1`` times.
+    Parameters
+    ----------
+    traj : Trajectory
+        A simulated motion, e.g. from :func:`simulate_steady` with a small ``perturb``;
+        store points densely enough (``max_step``) that each crossing is bracketed.
+    min_periods : int
+        Fewest whole periods to measure.
+
+    Returns
+    -------
+    float or None
+        The angular frequency ``2 pi / period``; None if ``theta`` crosses its mean upward
+        fewer than ``min_periods + 1`` times.
     """
     t = traj.t
     th = traj.theta
@@ -684,6 +721,8 @@ def growth_rate(traj: Trajectory, *, theta_ref: float | None = None,
     Parameters
     ----------
     traj : Trajectory
+        A simulated motion started near an unstable steady motion (:func:`simulate_steady`
+        with a tiny ``perturb``).
     theta_ref : float, optional
         The steady inclination; ``traj.theta_ref`` (set by :func:`simulate_steady`) or
         ``theta(0)`` by default.
@@ -694,7 +733,8 @@ def growth_rate(traj: Trajectory, *, theta_ref: float | None = None,
     Returns
     -------
     float or None
-        None when the linear part holds fewer than 8 points or no growth.
+        The growth rate ``lambda``; None when the linear part holds fewer than 8 points or
+        shows no growth.
     """
     from scipy.optimize import minimize_scalar
 
@@ -732,11 +772,26 @@ def growth_rate(traj: Trajectory, *, theta_ref: float | None = None,
 
 
 def fit_circle(x, y) -> tuple[float, float, float]:
-    """Algebraic least-squares circle through points ``(x, y)``: ``(x_c, y_c, r)``.
+    """Algebraic least-squares circle through points ``(x, y)``.
 
     Solves ``x^2 + y^2 + D x + E y + F = 0`` in the least-squares sense (Kasa fit) on
     coordinates centred at their mean (for conditioning).  Exact for points on a circle.
-    Used to check that C and P trace concentric circles about A (eqs. 22, 23).
+    Used to check that C and P trace concentric circles about A (eqs. 22-24).
+
+    Parameters
+    ----------
+    x, y : array_like
+        Coordinates of the points (e.g. ``traj.X_P, traj.Y_P``), equally many, at least 3.
+
+    Returns
+    -------
+    x_c, y_c, r : float
+        Centre and radius of the circle.
+
+    Raises
+    ------
+    ValueError
+        If ``x`` and ``y`` differ in length or hold fewer than 3 points.
     """
     x = np.asarray(x, dtype=float).ravel()
     y = np.asarray(y, dtype=float).ravel()
