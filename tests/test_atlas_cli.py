@@ -132,7 +132,8 @@ def test_cli_animate(tmp_path, capsys):
     assert main(["animate", "--theta0", "30deg", "--Omega0", "2", "--t-end", "2",
                  "--frames", "3", "--dpi", "40", "--out", str(out)]) == 0
     assert out.is_file()
-    assert "stable" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert "stable, varpi^2" in err and "unstable" not in err  # 30 deg, Omega0 = 2: stable
 
 
 @pytest.mark.parametrize("argv,needle", [
@@ -141,6 +142,21 @@ def test_cli_animate(tmp_path, capsys):
     (["figures", "--out", "x", "--only", "fig3"], "fig4"),
     (["animate", "--theta0", "0.3", "--Omega0", "1", "--out", "m.avi"], "gif"),
     (["animate", "--theta0", "0.3", "--out", "m.gif"], "Omega0"),
+    (["animate", "--theta0", "0.3", "--Omega0", "1", "--dpi", "0", "--out", "m.gif"], ">= 1"),
+    (["animate", "--theta0", "0.3", "--Omega0", "1", "--frames", "0", "--out", "m.gif"],
+     ">= 1"),
+    (["animate", "--theta0", "0.3", "--Omega0", "1", "--out", "nofolder/m.gif"],
+     "no such folder"),
+    (["animate", "--theta0", "0.3", "--Omega0", "1", "--out", "."], "gif"),
+    (["map", "--ground", "rough", "--kind", "stability", "--out", "nofolder/x.png"],
+     "no such folder"),
+    (["map", "--ground", "rough", "--kind", "stability", "--out", "."], "is a folder"),
+    (["map", "--ground", "rough", "--kind", "all-omega30", "--h", "nan", "--out", "x.png"],
+     "h must"),
+    (["figures", "--out", "x", "--scale", "nan"], "scale must"),
+    (["figures", "--out", "x", "--scale", "0"], "scale must"),
+    (["figures", "--out", "/proc/rollingdisk-test"], "rollingdisk: error"),
+    (["atlas", "--h", "-0.1", "--out", "x"], "h must"),
 ])
 def test_cli_errors_one_line_exit_2(tmp_path, monkeypatch, capsys, argv, needle):
     monkeypatch.chdir(tmp_path)

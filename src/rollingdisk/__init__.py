@@ -4,8 +4,9 @@ Implements and checks M. Batista, "Steady Motion of a Rigid Disk of Finite Thick
 Horizontal Plane": equations of motion on rough and smooth ground (section 2), steady
 motions (section 3) and their stability (section 4).  Dimensionless units m = a = g = 1.
 
-The numeric core (this package minus ``symbolic``, ``plotting``, ``animation`` and ``cli``)
-imports only numpy and scipy.
+The numeric core (``disk``, ``equations``, ``steady``, ``stability``, ``simulate``) imports
+only numpy and scipy (and numba, lazily, when the integrator first runs); ``symbolic``,
+``plotting``, ``figures``, ``animation``, ``atlas`` and ``cli`` are the edges that use it.
 """
 
 from .disk import GROUNDS, Disk

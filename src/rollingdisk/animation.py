@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .disk import check_real
+from .disk import check_h, check_real
 from .equations import _geometry
 from .plotting import trajectory_series
 
@@ -73,7 +73,7 @@ class DiskPose:
 def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: float,
               n: int = 48) -> DiskPose:
     """Positions of the drawn disk for one state (eqs. 4, 5, 7)."""
-    h = check_real("h", h, low=0.0)
+    h = check_h(h)
     xi, eta, zeta = body_frame(psi, theta)
     _, _, _, _, y_P, z_P = _geometry(h, theta)
     y_P, z_P = float(y_P), float(z_P)

@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .disk import Disk, check_real
+from .disk import Disk, check_h, check_real
 
 __all__ = ["AtlasResult", "build_atlas", "choose_motions", "steady_trajectory",
            "DEFAULT_H"]
@@ -132,7 +132,7 @@ def choose_motions(h: float) -> dict:
     (theta0, Omega0)}``.
     """
 
-    h = check_real("h", h, low=0.0)
+    h = check_h(h)
     out = {}
     th_s, w_s = 0.5, 1.5
     out["stable"] = (th_s, w_s / math.cos(th_s))
@@ -191,7 +191,7 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
     from .animation import animate
     from .stability import thresholds
 
-    h = check_real("h", h, low=0.0)
+    h = check_h(h)
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     files: list[Path] = []

@@ -13,10 +13,14 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-__all__ = ["Disk", "GROUNDS", "check_ground", "check_real", "h_tilde"]
+__all__ = ["Disk", "GROUNDS", "H_MAX", "check_ground", "check_h", "check_real", "h_tilde"]
 
 #: The two kinds of ground the theory covers: no slip, or no friction.
 GROUNDS = ("rough", "smooth")
+
+#: Largest half-thickness accepted (a bar 1e8 radii long): far beyond it h^4 and the
+#: like in the stability formulas leave floating-point range.
+H_MAX = 1e8
 
 #: Standard gravity [m/s^2], the default physical gravity of a :class:`Disk`.
 STANDARD_GRAVITY = 9.80665
@@ -55,6 +59,11 @@ def _is_numpy_real(value) -> bool:
     )
 
 
+def check_h(h) -> float:
+    """``h`` as a float, or ``ValueError``: the half-thickness must lie in ``[0, H_MAX]``."""
+    return check_real("h", h, low=0.0, high=H_MAX)
+
+
 def h_tilde(h: float, theta: float) -> float:
     """``h~ = h sgn(theta)``: which rim edge touches the plane (eq. 4); 0 at ``theta = 0``."""
     return h if theta > 0 else -h if theta < 0 else 0.0
@@ -74,8 +83,9 @@ class Disk:
     Parameters
     ----------
     h : float
-        Half-thickness in units of the radius, ``h >= 0`` (the paper's ``h``; ``h = 0`` is
-        the infinitely thin disk, large ``h`` a cylinder or a bar).
+        Half-thickness in units of the radius, ``0 <= h <= 1e8`` (the paper's ``h``;
+        ``h = 0`` is the infinitely thin disk, large ``h`` a cylinder or a bar; the upper
+        bound keeps every formula within floating-point range).
     radius : float, optional
         Physical radius ``a`` [m], ``> 0``. Needed only for conversions to SI units.
     mass : float, optional
@@ -99,7 +109,7 @@ class Disk:
     gravity: float = STANDARD_GRAVITY
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "h", check_real("h", self.h, low=0.0))
+        object.__setattr__(self, "h", check_h(self.h))
         if self.radius is not None:
             object.__setattr__(self, "radius",
                                check_real("radius", self.radius, low=0.0, low_open=True))

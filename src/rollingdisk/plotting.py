@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .disk import check_ground, check_real
+from .disk import check_ground, check_h, check_real
 
 __all__ = [
     "NO_MOTION",
@@ -198,7 +198,7 @@ def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200)
     """
     from .steady import r_C_star
 
-    h = check_real("h", h, low=0.0)
+    h = check_h(h)
     check_ground(ground)
     ax = _axes(ax)
     if r_C_scale not in ("symlog", "linear"):
@@ -268,7 +268,7 @@ def plot_stability_map(h: float, ground: str, ax=None, *, n=(240, 200),
     """
     from .stability import varpi2_circle
 
-    h = check_real("h", h, low=0.0)
+    h = check_h(h)
     check_ground(ground)
     omega30_max = check_real("omega30_max", omega30_max, low=0.0, low_open=True)
     ax = _axes(ax)
@@ -464,7 +464,7 @@ def plot_varpi2_curves(h: float, ground: str, ax=None, *, theta0s=None,
     """
     from .stability import varpi2_circle
 
-    h = check_real("h", h, low=0.0)
+    h = check_h(h)
     check_ground(ground)
     ax = _axes(ax)
     if theta0s is None:

@@ -208,12 +208,16 @@ class Trajectory:
 
     def as_columns(self) -> dict[str, np.ndarray]:
         """Columns ``t, X_C, Y_C, psi, theta, phi, omega1, omega2, omega3, X_P, Y_P, F_x,
-        F_y, F_z, E`` (the CSV layout of ``rollingdisk simulate --out``)."""
-        return {"t": self.t, "X_C": self.X_C, "Y_C": self.Y_C, "psi": self.psi,
+        F_y, F_z, E`` (the CSV layout of ``rollingdisk simulate --out``), and on smooth
+        ground ``V_X, V_Y`` after them, so that a smooth run can be restarted from a row."""
+        cols = {"t": self.t, "X_C": self.X_C, "Y_C": self.Y_C, "psi": self.psi,
                 "theta": self.theta, "phi": self.phi, "omega1": self.omega1,
                 "omega2": self.omega2, "omega3": self.omega3, "X_P": self.X_P,
                 "Y_P": self.Y_P, "F_x": self.F_x, "F_y": self.F_y, "F_z": self.F_z,
                 "E": self.E}
+        if self.ground == "smooth":
+            cols.update(V_X=self.V_X, V_Y=self.V_Y)
+        return cols
 
 
 # ---------------------------------------------------------------------------- numba core

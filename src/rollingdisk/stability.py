@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .disk import check_ground, check_real
+from .disk import check_ground, check_h, check_real
 from .equations import _rough_omega_dot, _smooth_omega_dot
 from .steady import Omega0_sq, SteadyMotion, _h_tilde_map, _map_domain
 
@@ -209,7 +209,7 @@ def reduced_jacobian(ground: str, h: float, theta0: float, omega20: float,
     ``theta = 0`` are evaluated with ``-h`` so that ``h~`` keeps its value at ``theta0``.
     """
     ground = check_ground(ground)
-    h = check_real("h", h, low=0.0)
+    h = check_h(h)
     theta0 = check_real("theta0", theta0, low=-math.pi / 2, high=math.pi / 2, low_open=True,
                         high_open=True)
     omega20 = check_real("omega20", omega20)
@@ -447,7 +447,7 @@ def thresholds(h: float) -> Thresholds:
     >>> t.rough_straight_line_omega20_sq, t.rough_se_circle_omega30_sq
     (0.3333333333333333, 0.8)
     """
-    h = check_real("h", h, low=0.0)
+    h = check_h(h)
     h2 = h * h
     r = math.sqrt(1.0 + h2)
     return Thresholds(

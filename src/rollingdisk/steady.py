@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .disk import Disk, check_ground, check_real, h_tilde
+from .disk import Disk, check_ground, check_h, check_real, h_tilde
 
 __all__ = [
     "NoSteadyMotion",
@@ -171,7 +171,7 @@ def se_circle_radius(h: float, theta0: float = 1.0) -> float:
     ``h~ (3 - 4h^2) / (6 (3 + 2h^2) sqrt(1 + h^2))`` with ``h~ = h sgn(theta0)``: positive
     (leaning towards A) for ``h < sqrt(3)/2``, negative for ``h > sqrt(3)/2``.
     """
-    h = check_real("h", h, low=0.0)
+    h = check_h(h)
     ht = h_tilde(h, check_real("theta0", theta0))
     return ht * (3.0 - 4.0 * h * h) / (6.0 * (3.0 + 2.0 * h * h) * math.sqrt(1.0 + h * h))
 
