@@ -78,3 +78,13 @@ def test_proportional_rejects_and_accepts():
     assert not proportional(cond * w2, cond)  # the factor depends on omega20
     assert not proportional(cond + sp.Rational(1, 10 ** 20) * w3, cond)
     assert not proportional(0 * cond, cond)  # a zero factor
+
+
+def test_same_at_points_sees_small_differences():
+    """The 50-digit identity test behind the rows: equal forms pass, a 1e-20 change fails."""
+    from rollingdisk.symbolic.sections34 import _same_at_points
+
+    cond = derived("smooth")["cond"]
+    assert _same_at_points(cond, sp.expand(cond))
+    assert not _same_at_points(cond, cond * (1 + sp.Rational(1, 10 ** 20) * h))
+    assert not _same_at_points(cond, cond + sp.Rational(1, 10 ** 20) * p)

@@ -120,13 +120,32 @@ def _points_kinematics(symbols) -> list[dict]:
             for pt in _POINTS]
 
 
+def _evaluator(expr) -> Callable[[dict], object]:
+    """``pt -> expr`` at a point of rationals, in 50-digit mpmath arithmetic."""
+    import mpmath
+
+    expr = sp.sympify(expr)
+    syms = sorted(expr.free_symbols, key=str)
+    f = sp.lambdify(syms, expr, "mpmath")
+
+    def value(pt):
+        with mpmath.workdps(50):
+            args = [mpmath.mpf(v.p) / v.q for v in (sp.Rational(pt[x]) for x in syms)]
+            return f(*args)
+
+    return value
+
+
 def _same_at_points(a, b, points=None) -> bool:
     """``a == b`` at random points, 40 digits, 1e-25 relative (probabilistic identity test)."""
-    for pt in points or _POINTS:
-        va = sp.N(sp.sympify(a).subs(pt), 40)
-        vb = sp.N(sp.sympify(b).subs(pt), 40)
-        if abs(va - vb) > sp.Float("1e-25", 40) * (1 + abs(va) + abs(vb)):
-            return False
+    import mpmath
+
+    fa, fb = _evaluator(a), _evaluator(b)
+    with mpmath.workdps(50):  # the arithmetic below too, not only the evaluation
+        for pt in points or _POINTS:
+            va, vb = fa(pt), fb(pt)
+            if abs(va - vb) > 1e-25 * (1 + abs(va) + abs(vb)):
+                return False
     return True
 
 
@@ -135,25 +154,29 @@ def proportional(a, b, params=(h, p)) -> bool:
 
     At each random point, ``a/b`` is evaluated at four variants of the point that share the
     values of ``params`` but draw every other symbol (the angular velocities, radii) afresh;
-    the ratios must agree to 1e-25 relative and be non-zero (40-digit arithmetic).
+    the ratios must agree to 1e-25 relative and be non-zero (50-digit arithmetic).
     """
+    import mpmath
+
     rng = random.Random(7)
     a, b = sp.sympify(a), sp.sympify(b)
+    fa, fb = _evaluator(a), _evaluator(b)
     others = sorted((a.free_symbols | b.free_symbols) - set(params), key=str)
-    for pt in _POINTS:
-        ratios = []
-        for k in range(4):
-            q = dict(pt)
-            q.update({x: sp.Rational(rng.randint(-300, 300), 53 + k) or 1 for x in others
-                      if k or x not in pt})
-            va, vb = sp.N(a.subs(q), 40), sp.N(b.subs(q), 40)
-            if abs(vb) < 1e-30:
+    with mpmath.workdps(50):  # the ratios too, not only the evaluation
+        for pt in _POINTS:
+            ratios = []
+            for k in range(4):
+                q = dict(pt)
+                q.update({x: sp.Rational(rng.randint(-300, 300), 53 + k) or 1 for x in others
+                          if k or x not in pt})
+                va, vb = fa(q), fb(q)
+                if abs(vb) < 1e-30:
+                    return False
+                ratios.append(va / vb)
+            r0 = ratios[0]
+            if abs(r0) < 1e-25 or any(abs(r - r0) > 1e-25 * (abs(r) + abs(r0))
+                                      for r in ratios[1:]):
                 return False
-            ratios.append(va / vb)
-        r0 = ratios[0]
-        if abs(r0) < 1e-25 or any(abs(r - r0) > sp.Float("1e-25", 40) * (abs(r) + abs(r0))
-                                  for r in ratios[1:]):
-            return False
     return True
 
 
@@ -608,11 +631,19 @@ def _compute_rows() -> list[dict]:
 
 def _threshold(expr, var, thr) -> bool:
     """``expr`` (no p0) vanishes at ``var = sqrt(thr)``, < 0 just below, > 0 just above."""
+    import mpmath
+
+    syms = sorted(expr.free_symbols - {var}, key=str)
+    f_expr = sp.lambdify([var, *syms], expr, "mpmath")
+    f_thr = _evaluator(thr)
     for pt in _POINTS:
-        t = sp.N(thr.subs(pt), 40)
-        vals = [sp.N(expr.subs(var, sp.sqrt(f * t)).subs(pt), 40) for f in (1, 0.9, 1.1)]
-        if not (abs(vals[0]) < 1e-25 * (1 + abs(vals[1])) and vals[1] < 0 < vals[2]):
-            return False
+        with mpmath.workdps(50):
+            args = [mpmath.mpf(sp.Rational(pt[x]).p) / sp.Rational(pt[x]).q for x in syms]
+            t = f_thr(pt)
+            vals = [f_expr(mpmath.sqrt(f * t), *args) for f in (1, mpmath.mpf(9) / 10,
+                                                                mpmath.mpf(11) / 10)]
+            if not (abs(vals[0]) < 1e-25 * (1 + abs(vals[1])) and vals[1] < 0 < vals[2]):
+                return False
     return True
 
 
