@@ -16,6 +16,9 @@ def test_derive_json(capsys):
     bad = {r["equation"] for r in rows if r["status"] == "misprint"}
     assert {"(31) first form", "(33)", "(44)", "(45)", "(48)"} <= bad
     assert all(r["printed"] and r["correct"] for r in rows if r["status"] == "misprint")
+    listed = [r["equation"] for r in rows]
+    for eq in ("(37)", "(38)", "(49)"):  # checked once, with section 2
+        assert listed.count(eq) == 1, eq
 
 
 def test_derive_table(capsys):

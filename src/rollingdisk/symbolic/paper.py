@@ -36,7 +36,31 @@ from .derivation import (
     v_Cz,
 )
 
-__all__ = ["EquationCheck", "checks_sections_1_2", "same"]
+__all__ = ["PRINTED_38", "PRINTED_49",
+           "EquationCheck", "checks_sections_1_2", "same"]
+
+
+# The printed reduced equations, in the symbols of :mod:`.derivation`; ``sections34`` starts
+# from them too (``source="printed"``), so they are typed in here only.
+_s, _c, _p = sp.sin(theta), sp.cos(theta), sp.tan(theta)
+_y_P, _z_P = _s - ht * _c, -(_c + ht * _s)  # printed (4)
+_k1, _k2 = sp.Rational(1, 4) + h**2 / 3, sp.Rational(1, 2)  # printed (10)
+
+#: eq. (38) as printed: (domega1, domega2, domega3)/dt on rough ground.
+PRINTED_38 = sp.Matrix([
+    (6 * (3 + 2 * ht * _p) * omega2 * omega3 - ((3 + 16 * h**2) * _p + 12 * ht) * omega3**2
+     + 12 * (_s - ht * _c)) / (15 + 16 * h**2),
+    -(4 * ht * omega2 + sp.Rational(2, 3) * (3 + 4 * h**2) * omega3) * omega1 / (3 + 8 * h**2),
+    (-6 * omega2 / (3 + 8 * h**2) + (_p + 4 * ht / (3 + 8 * h**2)) * omega3) * omega1,
+])
+
+#: eq. (49) as printed: (domega1, domega2, domega3)/dt on smooth ground.
+PRINTED_49 = sp.Matrix([
+    ((_k2 * omega2 - _k1 * omega3 * _p) * omega3 + _y_P + _y_P * _z_P * omega1**2)
+    / (_k1 + _y_P**2),
+    0,
+    (-_k2 * omega2 + _k1 * omega3 * _p) * omega1 / _k1,
+])
 
 
 @dataclass(frozen=True)
@@ -151,20 +175,9 @@ def checks_sections_1_2() -> tuple[EquationCheck, ...]:
                      sp.Matrix(d.rough_velocity_of_C),
                      sp.Matrix([omega2 - ht * omega3, -omega1 * (c + ht * s)])))
     # (38)
-    printed38 = sp.Matrix([
-        (6 * (3 + 2 * ht * p) * omega2 * omega3 - ((3 + 16 * h**2) * p + 12 * ht) * omega3**2
-         + 12 * (s - ht * c)) / (15 + 16 * h**2),
-        -(4 * ht * omega2 + sp.Rational(2, 3) * (3 + 4 * h**2) * omega3) * omega1 / (3 + 8 * h**2),
-        (-6 * omega2 / (3 + 8 * h**2) + (p + 4 * ht / (3 + 8 * h**2)) * omega3) * omega1,
-    ])
     rows.append(_row("(38)", "domega/dt on rough ground",
-                     sp.Matrix(d.rough_omega_dot), printed38))
+                     sp.Matrix(d.rough_omega_dot), PRINTED_38))
     # (49)
-    printed49 = sp.Matrix([
-        ((k2 * omega2 - k1 * omega3 * p) * omega3 + y_P + y_P * z_P * omega1**2) / (k1 + y_P**2),
-        0,
-        (-k2 * omega2 + k1 * omega3 * p) * omega1 / k1,
-    ])
     rows.append(_row("(49)", "domega/dt on smooth ground",
-                     sp.Matrix(d.smooth_omega_dot), printed49))
+                     sp.Matrix(d.smooth_omega_dot), PRINTED_49))
     return tuple(rows)
