@@ -1,9 +1,15 @@
-"""Shared fixtures: random states for both grounds."""
+"""Shared fixtures and strategies: random states for both grounds, parameter ranges."""
 
 import numpy as np
 import pytest
+from hypothesis import strategies as st
 
 from rollingdisk import Disk
+
+#: hypothesis strategies shared by the steady-motion and stability tests
+H = st.floats(0.0, 5.0)
+THETA = st.floats(1e-4, 1.569)  # (0, pi/2); tan(1.569) ~ 560
+SIGN = st.sampled_from([1.0, -1.0])
 
 
 def random_states(ground: str, n: int, seed: int):

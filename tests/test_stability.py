@@ -15,6 +15,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 
+from conftest import SIGN, THETA, H
 from rollingdisk import Disk, equations_of_motion
 from rollingdisk.stability import (
     Stability,
@@ -30,10 +31,6 @@ from rollingdisk.stability import (
     varpi2_rough_rC,
 )
 from rollingdisk.steady import r_C_star, steady_motion, straight_line
-
-H = st.floats(0.0, 5.0)
-THETA = st.floats(1e-4, 1.569)  # (0, pi/2); tan(1.569) ~ 560
-SIGN = st.sampled_from([1.0, -1.0])
 
 
 def jac_scale(m) -> float:

@@ -15,6 +15,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 
+from conftest import SIGN, THETA, H
 from rollingdisk import Disk, contact_force, contact_point, equations_of_motion, omega_dot
 from rollingdisk.steady import (
     NoSteadyMotion,
@@ -25,10 +26,6 @@ from rollingdisk.steady import (
     steady_motion,
     straight_line,
 )
-
-H = st.floats(0.0, 5.0)
-THETA = st.floats(1e-4, 1.569)  # (0, pi/2); tan(1.569) ~ 560
-SIGN = st.sampled_from([1.0, -1.0])
 
 
 def residual_scale(m: SteadyMotion) -> float:
