@@ -357,45 +357,24 @@ def plot_all_omega30_stable(ground: str, ax=None, *, n=(240, 200),
     return MapPlot(ax, deg, hh, ok, artists)
 
 
-def _numerator_quadratic(ground, h, theta0):
-    """Coefficients ``(a, b, c)`` of ``varpi^2 omega30^2 = a x^2 + b x + c``, ``x = omega30^2``
-    (up to the positive factor of the denominator), from the library's ``varpi2_circle``."""
-    from .stability import varpi2_circle
-
-    with np.errstate(all="ignore"):
-        f = [x * np.asarray(varpi2_circle(ground, h, theta0, math.sqrt(x)), float)
-             for x in (1.0, 2.0, 3.0)]
-        # the parabola through x = 1, 2, 3
-        a = 0.5 * (f[2] - 2.0 * f[1] + f[0])
-        b = f[1] - f[0] - 3.0 * a
-        c = f[0] - a - b
-    return a, b, c
-
-
 def varpi2_zero_surface(ground: str, h, theta0):
     """The roots ``omega30 > 0`` of ``varpi^2 = 0`` (eqs. 45 / 55) at each ``(h, theta0)``.
 
-    ``varpi^2 omega30^2`` is, for fixed ``(theta0, h)``, a quadratic in ``x = omega30^2``
-    (its numerator ``P2 x^2 + P1 x + P0`` over a positive denominator).  The quadratic is
-    recovered from :func:`rollingdisk.stability.varpi2_circle` at ``x = 1, 2, 3`` (so the
-    library's corrected formula is what is drawn) and its positive roots are returned.
+    ``varpi^2 omega30^2`` is, for fixed ``(theta0, h)``, a quadratic in ``omega30^2`` over
+    a positive denominator; its roots are :func:`rollingdisk.stability.critical_omega30_sq`
+    (the library's corrected eq. (45)).
 
     Returns
     -------
     (lower, upper) : ndarrays
         ``omega30`` of the lower and upper sheet, NaN where there is no positive root.
     """
+    from .stability import critical_omega30_sq
+
     check_ground(ground)
-    h, theta0 = np.broadcast_arrays(np.asarray(h, float), np.asarray(theta0, float))
-    a, b, c = _numerator_quadratic(ground, h, theta0)
+    lower, upper = critical_omega30_sq(ground, h, theta0)
     with np.errstate(all="ignore"):
-        disc = b * b - 4.0 * a * c
-        sq = np.sqrt(np.where(disc >= 0, disc, np.nan))
-        r1 = (-b - np.sign(a) * sq) / (2.0 * a)
-        r2 = (-b + np.sign(a) * sq) / (2.0 * a)
-        lo = np.sqrt(np.where(r1 > 0, r1, np.nan))
-        hi = np.sqrt(np.where(r2 > 0, r2, np.nan))
-    return lo, hi
+        return np.sqrt(np.where(lower > 0, lower, np.nan)), np.sqrt(upper)
 
 
 def _close_fold(ground, H, TH, lo, hi):
@@ -404,10 +383,12 @@ def _close_fold(ground, H, TH, lo, hi):
     This moves the drawn fold by at most one grid cell."""
     from scipy.ndimage import binary_dilation
 
-    a, b, _ = _numerator_quadratic(ground, H, TH)
+    from .stability import circle_coefficients
+
+    _, P1, P2, _ = circle_coefficients(ground, H, TH)
     valid = np.isfinite(lo) & np.isfinite(hi)
     with np.errstate(all="ignore"):
-        double = -b / (2.0 * a)
+        double = -P1 / (2.0 * P2)  # the double root in omega30^2
     edge = binary_dilation(valid) & ~valid & np.isfinite(double) & (double > 0)
     lo, hi = lo.copy(), hi.copy()
     lo[edge] = hi[edge] = np.sqrt(double[edge])
