@@ -240,6 +240,9 @@ def test_single_point_validation():
         steady_motion(disk, "rough", 0.0, Omega0=1.0)
     with pytest.raises(ValueError, match="lean must be 1 or -1"):
         straight_line(disk, "rough", 1.0, lean=True)
+    with pytest.raises(NoSteadyMotion, match="static-equilibrium tilt"):
+        straight_line(disk, "rough", 1.0, theta0=0.5)
+    assert straight_line(disk, "rough", 1.0, theta0=-math.atan(0.3)).theta0 < 0
     with pytest.raises(ValueError, match="h must"):
         se_circle_radius(-1.0)
     with pytest.raises(ValueError, match="exactly one of Omega0, r_C, r_P"):

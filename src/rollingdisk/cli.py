@@ -126,14 +126,7 @@ def _motion_from_args(args, command: str):
     if straight:
         if args.omega0 is None:
             raise CLIError(f"rollingdisk {command}: --motion straight needs --omega0")
-        lean = -1 if args.theta0 is not None and args.theta0 < 0 else 1
-        motion = straight_line(disk, args.ground, args.omega0, lean=lean)
-        if args.theta0 is not None and abs(args.theta0 - motion.theta0) > 1e-9:
-            raise CLIError(
-                f"rollingdisk {command}: a straight line is steady only at theta0 = "
-                f"arctan(h) = {abs(motion.theta0):.6g} rad "
-                f"({math.degrees(abs(motion.theta0)):.4g}deg), not {args.theta0:.6g}")
-        return motion
+        return straight_line(disk, args.ground, args.omega0, theta0=args.theta0)
     if args.omega0 is not None:
         raise CLIError(f"rollingdisk {command}: --omega0 is for --motion straight; "
                        "circles take --Omega0, --rC or --rP")

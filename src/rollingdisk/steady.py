@@ -349,7 +349,8 @@ def steady_motion(disk: Disk, ground: str, theta0: float, *, Omega0: float | Non
 
 
 def straight_line(disk: Disk, ground: str, omega0: float, *, v_Cx0: float | None = None,
-                  v_Cy0: float = 0.0, lean: int = 1) -> SteadyMotion:
+                  v_Cy0: float = 0.0, lean: int = 1,
+                  theta0: float | None = None) -> SteadyMotion:
     """Steady rolling on a straight line at the SE tilt ``tan(theta0) = h`` (section 3.1).
 
     Parameters
@@ -364,6 +365,9 @@ def straight_line(disk: Disk, ground: str, omega0: float, *, v_Cx0: float | None
         arbitrary, ``v_Cx0 = omega0`` (no slip) by default.
     lean : {1, -1}
         ``theta0 = lean * arctan(h)``.
+    theta0 : float, optional
+        Instead of ``lean``: the tilt the caller expects; it must be ``+-arctan(h)``
+        (to 1e-9), the only tilts of a straight line, else :class:`NoSteadyMotion`.
 
     Examples
     --------
@@ -377,6 +381,14 @@ def straight_line(disk: Disk, ground: str, omega0: float, *, v_Cx0: float | None
     omega0 = check_real("omega0", omega0)
     if isinstance(lean, bool) or lean not in (1, -1):
         raise ValueError(f"lean must be 1 or -1, got {lean!r}")
+    if theta0 is not None:
+        theta0 = check_real("theta0", theta0)
+        lean = -1 if theta0 < 0 else 1
+        if abs(abs(theta0) - disk.static_equilibrium_theta) > 1e-9:
+            raise NoSteadyMotion(
+                f"a straight line is steady only at the static-equilibrium tilt theta0 = "
+                f"+-arctan(h) = +-{disk.static_equilibrium_theta:.6g} rad "
+                f"({math.degrees(disk.static_equilibrium_theta):.4g} deg), not {theta0:.6g}")
     v_Cy0 = check_real("v_Cy0", v_Cy0)
     v_Cx0 = omega0 if v_Cx0 is None else check_real("v_Cx0", v_Cx0)
     if ground == "rough" and (v_Cx0 != omega0 or v_Cy0 != 0.0):
