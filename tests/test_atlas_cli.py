@@ -66,7 +66,7 @@ def test_atlas_thresholds_and_motions(quick_atlas):
 def test_atlas_progress_lines(quick_atlas):
     _, progress = quick_atlas
     lines = progress.strip().splitlines()
-    assert lines[0].startswith("[1/7]") and lines[-2].startswith("[7/7]")
+    assert lines[0].startswith("[1/8]") and lines[-2].startswith("[8/8]")
     assert lines[-1].startswith("atlas written to")
 
 

@@ -197,7 +197,7 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
     files: list[Path] = []
     dpi = 60 if quick else 90
     n_map = (60, 50) if quick else (220, 180)
-    pr = _Progress(7, stream=stream, enabled=progress)
+    pr = _Progress(8, stream=stream, enabled=progress)
 
     # 1. thresholds ------------------------------------------------------------------
     pr.step("thresholds")
@@ -247,7 +247,14 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
     _save(fig, out / "all_omega30.png", dpi, files)
     pr.done()
 
-    # 5./6. two steady motions, simulated -----------------------------------------------
+    # 5. the compiled integrator: about 20 s the first time, then loaded from the cache --
+    pr.step("integrator (compiled on first use, cached afterwards)")
+    from .simulate import jit_compile
+
+    jit_compile()
+    pr.done()
+
+    # 6./7. two steady motions, simulated -----------------------------------------------
     chosen = choose_motions(h)
     motions = {}
     for kind in ("stable", "unstable"):
@@ -269,7 +276,7 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
         motions[kind] = _motion_record(motion, stab, traj, kick)
         pr.done(f"status {motions[kind]['status']}")
 
-    # 7. index page ------------------------------------------------------------------------
+    # 8. index page ------------------------------------------------------------------------
     pr.step("index.html")
     index = out / "index.html"
     index.write_text(_index_html(h, thr, motions, [p.name for p in files]), encoding="utf-8")

@@ -336,6 +336,7 @@ def _write_csv_atomic(path: str, columns: dict) -> None:
 
 def _run_simulate(args) -> int:
     import json
+    import threading
 
     import numpy as np
 
@@ -345,7 +346,6 @@ def _run_simulate(args) -> int:
         DEFAULT_RTOL,
         energy_drift,
         growth_rate,
-        jit_compile,
         oscillation_frequency,
         simulate,
         simulate_steady,
@@ -358,11 +358,16 @@ def _run_simulate(args) -> int:
         _check_out_file(args.out, "simulate")
     options = dict(rtol=DEFAULT_RTOL if args.rtol is None else args.rtol,
                    atol=DEFAULT_ATOL if args.atol is None else args.atol, method=args.method)
-    if args.method == "dop853":
-        jit_compile()  # load (or compile) before the clock and the bar start
     bar = None if args.json or args.method != "dop853" else _ProgressBar(sys.stderr)
+    notice = None
     if bar is not None:
         options["progress"] = bar
+        # the first run after an install compiles the integrator (about 20 s): say so
+        notice = threading.Timer(2.0, lambda: bar.shown or print(
+            "compiling the integrator (first use only; cached afterwards) ...",
+            file=sys.stderr, flush=True))
+        notice.daemon = True
+        notice.start()
     try:
         if motion is not None:
             traj = simulate_steady(motion, args.t_end, perturb=args.perturb, kick=args.kick,
@@ -377,6 +382,8 @@ def _run_simulate(args) -> int:
                 raise ValueError(f"t_end must be a finite number > 0, got {args.t_end!r}")
             traj = simulate(disk, args.ground, y0, (0.0, args.t_end), **options)
     finally:
+        if notice is not None:
+            notice.cancel()
         if bar is not None:
             bar.close()
     stab = None if motion is None else stability(motion)
