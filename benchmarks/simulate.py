@@ -23,8 +23,7 @@ import time
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from rollingdisk import Disk, equations_of_motion, omega_dot
-from rollingdisk.simulate import energy_drift, jit_compile, simulate
+from rollingdisk import Disk, energy_drift, equations_of_motion, jit_compile, omega_dot, simulate
 
 H, THETA0, OMEGA30, PERTURB = 0.1, 0.3, 3.0, 1e-4
 
@@ -41,7 +40,7 @@ def cold_compile_time() -> float:
     """Compile time with an empty numba cache, measured in a fresh interpreter."""
     with tempfile.TemporaryDirectory() as tmp:
         env = dict(os.environ, NUMBA_CACHE_DIR=tmp)
-        code = "from rollingdisk.simulate import jit_compile; print(jit_compile())"
+        code = "from rollingdisk import jit_compile; print(jit_compile())"
         out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
                              text=True, check=True)
         return float(out.stdout.strip().splitlines()[-1])

@@ -88,15 +88,15 @@ def test_cli_atlas_is_a_thin_wrapper(tmp_path, monkeypatch, capsys):
 
 @pytest.mark.parametrize("h", [0.0, 0.17, 0.9, 3.0])
 def test_choose_motions_for_any_disk(h):
-    from rollingdisk.stability import varpi2_circle
+    from rollingdisk import varpi2_circle
 
     m = choose_motions(h)
     import math
 
     th, O = m["stable"]
-    assert varpi2_circle("rough", h, th, O * math.cos(th)) > 0
+    assert varpi2_circle(h, "rough", th, O * math.cos(th)) > 0
     th, O = m["unstable"]
-    assert varpi2_circle("rough", h, th, O * math.cos(th)) < 0
+    assert varpi2_circle(h, "rough", th, O * math.cos(th)) < 0
 
 
 @pytest.mark.slow

@@ -11,9 +11,8 @@ import os
 import numpy as np
 import pytest
 
-from rollingdisk import Disk, simulate
+from rollingdisk import Disk, energy_drift, simulate
 from rollingdisk.cli import _ProgressBar, main
-from rollingdisk.simulate import energy_drift
 
 STATE = "theta=0.3,omega2=2.0,omega3=0.5"
 COLUMNS = ["t", "X_C", "Y_C", "psi", "theta", "phi", "omega1", "omega2", "omega3", "X_P",

@@ -7,9 +7,8 @@ import math
 
 import pytest
 
-from rollingdisk import Disk
+from rollingdisk import Disk, stability, thresholds
 from rollingdisk.cli import main
-from rollingdisk.stability import stability, thresholds
 from rollingdisk.steady import steady_motion, straight_line
 
 KEYS = {"ground", "h", "motion", "theta0", "Omega0", "omega0", "omega20", "omega30", "r_C",

@@ -19,8 +19,7 @@ import numpy as np
 import pytest
 
 import rollingdisk as rd
-from rollingdisk.simulate import oscillation_frequency
-from rollingdisk.stability import varpi2_rough_rC
+from rollingdisk import oscillation_frequency, varpi2_rough_rC
 from rollingdisk.steady import r_C_star
 
 H = 0.17

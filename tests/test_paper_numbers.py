@@ -15,10 +15,11 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq, minimize_scalar
 
-from rollingdisk import Disk, equations_of_motion
-from rollingdisk.stability import (
+from rollingdisk import (
+    Disk,
     circle_coefficients,
     critical_omega30_sq,
+    equations_of_motion,
     stability,
     thresholds,
     varpi2_circle,
@@ -31,14 +32,14 @@ EPS = 1e-12
 
 def all_stable(ground, h, t):
     """P1 >= 0 or Delta < 0 (regions (46), (59)) as a float in {0, 1}."""
-    P0, P1, P2, _ = circle_coefficients(ground, h, t)
+    P0, P1, P2, _ = circle_coefficients(h, ground, t)
     return float((P1 >= 0) or (P1 * P1 - 4 * P0 * P2 < 0))
 
 
 def right_boundary(ground, h):
     """Largest theta0 below which some omega30 is unstable (right edge of Fig. 5 / 7)."""
     th = np.linspace(1e-6, math.pi / 2 - 1e-10, 100001)
-    P0, P1, P2, _ = circle_coefficients(ground, h, th)
+    P0, P1, P2, _ = circle_coefficients(h, ground, th)
     ok = (P1 >= 0) | (P1 * P1 - 4 * P0 * P2 < 0)
     i = np.nonzero(~ok)[0].max()
     return brentq(lambda t: all_stable(ground, h, t) - 0.5, th[i], th[i + 1], xtol=1e-15)
@@ -48,7 +49,7 @@ def sup_critical_omega30_sq(ground):
     """Largest omega30^2 on the varpi^2 = 0 surface over h in [0, 1e4], theta0 in (0, pi/2)."""
     H = np.concatenate([np.linspace(0, 5, 501), np.geomspace(5, 1e4, 200)])[:, None]
     T = np.concatenate([[1e-9], np.linspace(1e-4, math.pi / 2 - 1e-4, 1500)])[None, :]
-    lo, hi = critical_omega30_sq(ground, H, T)
+    lo, hi = critical_omega30_sq(H, ground, T)
     return float(np.nanmax(hi))
 
 
@@ -63,10 +64,10 @@ t_rough = thresholds(0.0)
 t_half = thresholds(math.sqrt(3) / 2)
 theta_186 = brentq(lambda t: all_stable("rough", 0.0, t) - 0.5, 0.1, 0.6, xtol=1e-15)
 theta_215 = brentq(lambda t: all_stable("smooth", 0.0, t) - 0.5, 0.1, 0.6, xtol=1e-15)
-_, hi_215 = critical_omega30_sq("smooth", 0.0, theta_215 - 1e-9)
-_, hi_half = critical_omega30_sq("smooth", 0.5, 0.0)  # theta0 = 0 means 0+ in maps
-_, hi_h0 = critical_omega30_sq("smooth", 0.0, 0.0)
-_, hi_rough_h0 = critical_omega30_sq("rough", 0.0, 0.0)
+_, hi_215 = critical_omega30_sq(0.0, "smooth", theta_215 - 1e-9)
+_, hi_half = critical_omega30_sq(0.5, "smooth", 0.0)  # theta0 = 0 means 0+ in maps
+_, hi_h0 = critical_omega30_sq(0.0, "smooth", 0.0)
+_, hi_rough_h0 = critical_omega30_sq(0.0, "rough", 0.0)
 
 # (what, library, paper, abs tolerance)
 ROWS = [
@@ -144,7 +145,7 @@ def test_omega0_asymptotes_after_33():
 def test_rough_large_h_limit_at_theta0_zero():
     """Text before Fig. 6: for h -> inf at theta0 = 0, varpi^2 -> (omega30^2 - 1)/2."""
     w = 1.3
-    assert float(varpi2_circle("rough", 1e6, 1e-15, w)) == pytest.approx(0.5 * (w * w - 1),
+    assert float(varpi2_circle(1e6, "rough", 1e-15, w)) == pytest.approx(0.5 * (w * w - 1),
                                                                            rel=1e-5)
 
 
@@ -157,10 +158,10 @@ def test_eq48_asymptote_is_misprinted():
     w = 0.7
     t = math.pi / 2 - 1e-7
     for h in (0.5, 2.0):
-        ratio = float(varpi2_circle("rough", h, t, w)) / (w * w * math.tan(t) ** 2)
+        ratio = float(varpi2_circle(h, "rough", t, w)) / (w * w * math.tan(t) ** 2)
         assert ratio == pytest.approx((3 + 16 * h * h) / (15 + 16 * h * h), rel=1e-3)
         assert ratio != pytest.approx(2 * (3 + 16 * h * h) / (15 + 16 * h * h), rel=0.1)
-    ratio0 = float(varpi2_circle("rough", 0.0, t, w)) / (w * w * math.tan(t) ** 2)
+    ratio0 = float(varpi2_circle(0.0, "rough", t, w)) / (w * w * math.tan(t) ** 2)
     assert ratio0 == pytest.approx(1 / 3, rel=1e-3)
     m = steady_motion(Disk(h=2.0), "rough", 1.5, Omega0=w / math.cos(1.5))
     assert varpi2_linearized(m) == pytest.approx(stability(m).varpi2, rel=1e-8)

@@ -147,36 +147,36 @@ def test_varpi2_curves_thin_disk_crossing():
 # ------------------------------------------------------------------------------ surfaces
 def test_surface_roots_are_zeros_of_varpi2():
     """varpi^2 (the library's closed form) changes sign across each sheet drawn."""
-    from rollingdisk.stability import varpi2_circle
+    from rollingdisk import varpi2_circle
 
     th = np.linspace(0.05, 1.4, 15)
     hh = np.linspace(0.0, 2.0, 9)
     TH, H = np.meshgrid(th, hh)
     for ground in ("rough", "smooth"):
-        lo, hi = plotting.varpi2_zero_surface(ground, H, TH)
+        lo, hi = plotting.varpi2_zero_surface(H, ground, TH)
         assert np.isfinite(lo).any() and np.isfinite(hi).any()
         apart = ~(np.abs(hi - lo) < 0.02 * hi)  # skip near-double roots
         for sheet in (lo, hi):
             ok = np.isfinite(sheet) & apart & (sheet > 0.01)  # tiny roots: near the SE tilt
-            below = np.asarray(varpi2_circle(ground, H[ok], TH[ok], sheet[ok] * 0.99))
-            above = np.asarray(varpi2_circle(ground, H[ok], TH[ok], sheet[ok] * 1.01))
+            below = np.asarray(varpi2_circle(H[ok], ground, TH[ok], sheet[ok] * 0.99))
+            above = np.asarray(varpi2_circle(H[ok], ground, TH[ok], sheet[ok] * 1.01))
             assert np.all(below * above < 0)
 
 
 def test_surface_thin_disk_top_values():
     """theta0 -> 0, h = 0: the surface reaches omega30 = sqrt(4/5) (rough) and 2 (smooth)."""
-    _, hi = plotting.varpi2_zero_surface("rough", 0.0, 1e-4)
+    _, hi = plotting.varpi2_zero_surface(0.0, "rough", 1e-4)
     assert hi == pytest.approx(math.sqrt(0.8), rel=1e-3)
-    _, hi = plotting.varpi2_zero_surface("smooth", 0.0, 1e-4)
+    _, hi = plotting.varpi2_zero_surface(0.0, "smooth", 1e-4)
     assert hi == pytest.approx(2.0, rel=1e-3)
 
 
 def test_surface_smooth_closes_at_h_one_half():
     """Section 4.2: at theta0 = 0 the smooth surface ends at h = 1/2, omega30 = sqrt(3/2)."""
-    lo, hi = plotting.varpi2_zero_surface("smooth", 0.499, 1e-4)
+    lo, hi = plotting.varpi2_zero_surface(0.499, "smooth", 1e-4)
     assert lo == pytest.approx(math.sqrt(1.5), abs=0.06)
     assert hi == pytest.approx(math.sqrt(1.5), abs=0.06)
-    lo, hi = plotting.varpi2_zero_surface("smooth", 0.52, 1e-4)
+    lo, hi = plotting.varpi2_zero_surface(0.52, "smooth", 1e-4)
     assert np.isnan(lo) and np.isnan(hi)
 
 

@@ -21,17 +21,20 @@ import math
 import numpy as np
 import pytest
 
-from rollingdisk import Disk, Trajectory, simulate, simulate_steady
-from rollingdisk.equations import _rough_rhs, _smooth_rhs, contact_force
-from rollingdisk.simulate import (
+from rollingdisk import (
     DEFAULT_ATOL,
     DEFAULT_RTOL,
+    Disk,
+    Trajectory,
     energy_drift,
     fit_circle,
     growth_rate,
     jit_compile,
     oscillation_frequency,
+    simulate,
+    simulate_steady,
 )
+from rollingdisk.equations import _rough_rhs, _smooth_rhs, contact_force
 from rollingdisk.steady import steady_motion, straight_line
 from steady_numeric import steady_omega20, varpi2_numeric
 
@@ -576,7 +579,7 @@ STEADY_ROWS = [
 @pytest.mark.parametrize("row", STEADY_ROWS, ids=str)
 def test_simulation_confirms_the_stability_module(row):
     """Closed-form varpi^2 of rollingdisk.stability vs the simulated motion (both ways)."""
-    from rollingdisk.stability import stability
+    from rollingdisk import stability
     from rollingdisk.steady import steady_motion, straight_line
 
     ground, h, theta0, kind, value = row

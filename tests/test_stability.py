@@ -16,11 +16,12 @@ from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 
 from conftest import SIGN, THETA, H
-from rollingdisk import Disk, equations_of_motion
-from rollingdisk.stability import (
+from rollingdisk import (
+    Disk,
     Stability,
     circle_coefficients,
     critical_omega30_sq,
+    equations_of_motion,
     reduced_jacobian,
     stability,
     stable_for_all_omega30,
@@ -35,7 +36,7 @@ from rollingdisk.steady import r_C_star, steady_motion, straight_line
 
 def jac_scale(m) -> float:
     """Scale of varpi^2's ingredients, so that 'relative' is meaningful near varpi^2 = 0."""
-    J = reduced_jacobian(m.ground, m.h, m.theta0, m.omega20, m.omega30)
+    J = reduced_jacobian(m.h, m.ground, m.theta0, m.omega20, m.omega30)
     return float(np.sum(np.abs(J[1, :]) * (1.0 + np.abs(J[:, 1]))))
 
 
@@ -50,7 +51,7 @@ def test_closed_forms_agree_with_linearization(h, theta0, lnW, sgn, lean, ground
     m = steady_motion(Disk(h=h), ground, lean * theta0, Omega0=sgn * math.exp(lnW))
     lin = varpi2_linearized(m)
     closed = stability(m).varpi2  # eq. (40) / (51)
-    circ = float(varpi2_circle(ground, h, m.theta0, m.omega30))  # eq. (45) corrected / (55)
+    circ = float(varpi2_circle(h, ground, m.theta0, m.omega30))  # eq. (45) corrected / (55)
     s = jac_scale(m)
     assert agree(lin, closed, s), (lin, closed, s)
     assert agree(lin, circ, s), (lin, circ, s)
@@ -103,7 +104,7 @@ def test_se_thresholds_from_linearization(h):
 
 def test_jacobian_structure_two_zero_modes():
     m = steady_motion(Disk(h=0.4), "rough", 0.7, Omega0=1.3)
-    J = reduced_jacobian("rough", m.h, m.theta0, m.omega20, m.omega30)
+    J = reduced_jacobian(m.h, "rough", m.theta0, m.omega20, m.omega30)
     ev = np.sort_complex(np.linalg.eigvals(J))
     assert np.linalg.matrix_rank(J, tol=1e-9) == 2
     small = ev[np.argsort(np.abs(ev))[:2]]
@@ -124,8 +125,8 @@ def test_stable_for_all_omega30_regions():
     for ground in ("rough", "smooth"):
         for h in (0.0, 0.5, 2.0):
             for th in np.linspace(0.05, 1.45, 8):
-                flag = bool(stable_for_all_omega30(ground, h, th))
-                lo, hi = critical_omega30_sq(ground, h, th)
+                flag = bool(stable_for_all_omega30(h, ground, th))
+                lo, hi = critical_omega30_sq(h, ground, th)
                 if flag:
                     n_flag += 1
                     assert np.isnan(lo) and np.isnan(hi)
@@ -145,7 +146,7 @@ def test_smooth_region_is_eq59():
     h = np.linspace(0, 3, 31)[:, None]
     th = np.linspace(0.01, 1.5, 40)[None, :]
     p = np.tan(th)
-    P0, P1, P2, _ = circle_coefficients("smooth", h, th)
+    P0, P1, P2, _ = circle_coefficients(h, "smooth", th)
     delta_neg = P1 ** 2 - 4 * P0 * P2 < 0
     eq59 = 3 * p ** 4 - 4 * h * p ** 3 + 6 * p ** 2 - 12 * h * p - 1 + 4 * h ** 2 > 0
     assert np.array_equal(delta_neg, eq59)
@@ -161,23 +162,23 @@ def test_stability_dataclass():
         Stability(math.nan)
     with pytest.raises(AttributeError):
         s.varpi2 = 1.0
-    assert np.isnan(varpi2_circle("rough", 0.3, 0.5, 0.0))
-    assert varpi2_closed_form("rough", 0.0, 0.2, np.ones(3), np.ones(3)).shape == (3,)
+    assert np.isnan(varpi2_circle(0.3, "rough", 0.5, 0.0))
+    assert varpi2_closed_form(0.0, "rough", 0.2, np.ones(3), np.ones(3)).shape == (3,)
 
 
 @pytest.mark.parametrize("ground", ["rough", "smooth"])
 def test_vectorized_forms_are_nan_outside_the_domain(ground):
     for h, th in ((-1.0, 0.5), (0.3, math.pi / 2), (0.3, -2.0)):
-        assert np.isnan(varpi2_closed_form(ground, h, th, 1.0, 1.0))
-        assert all(np.isnan(c) for c in circle_coefficients(ground, h, th))
-        assert not stable_for_all_omega30(ground, h, th)
+        assert np.isnan(varpi2_closed_form(h, ground, th, 1.0, 1.0))
+        assert all(np.isnan(c) for c in circle_coefficients(h, ground, th))
+        assert not stable_for_all_omega30(h, ground, th)
 
 
 def test_reduced_jacobian_validates():
     with pytest.raises(ValueError, match="h must"):
-        reduced_jacobian("rough", -1.0, 0.3, 1.0, 1.0)
+        reduced_jacobian(-1.0, "rough", 0.3, 1.0, 1.0)
     with pytest.raises(ValueError, match=r"theta0 must lie in \(-1.5708, 1.5708\)"):
-        reduced_jacobian("rough", 0.1, 2.0, 1.0, 1.0)
+        reduced_jacobian(0.1, "rough", 2.0, 1.0, 1.0)
 
 
 @pytest.mark.parametrize("ground", ["rough", "smooth"])
@@ -201,7 +202,7 @@ def _simulate(m, dtheta, T, n=4000):
     disk = Disk(h=m.h)
     y0 = m.initial_state()
     it = 3 if m.ground == "rough" else 5
-    J = reduced_jacobian(m.ground, m.h, m.theta0, m.omega20, m.omega30)
+    J = reduced_jacobian(m.h, m.ground, m.theta0, m.omega20, m.omega30)
     y0[it] += dtheta
     y0[it + 3] += J[2, 1] * dtheta
     y0[it + 4] += J[3, 1] * dtheta

@@ -172,7 +172,7 @@ def writer_for(path, fps: int):
 def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
             size: tuple[float, float] = (5.0, 4.4), title: str | None = None,
             progress: Callable[[int, int], None] | None = None) -> Path:
-    """Write a 3D animation of ``traj`` (a :class:`~rollingdisk.simulate.Trajectory` or any
+    """Write a 3D animation of ``traj`` (a :class:`~rollingdisk.Trajectory` or any
     object with ``disk, ground, t, y``) to ``out`` (``.gif`` or ``.mp4``).
 
     The disk is drawn as a cylinder of thickness ``2h`` with a body-fixed red marker (so

@@ -4,7 +4,7 @@
 half-thickness ``h`` it writes into a folder
 
 * ``thresholds.json`` and a table of the stability thresholds (eqs. 42, 43, 53, 57 as
-  corrected in :mod:`rollingdisk.stability`),
+  corrected in :mod:`rollingdisk._stability`),
 * existence maps (rough ground: ``(theta0, r_C)``, Figure 4 style; smooth ground: C at
   rest), stability maps in ``(theta0, omega30)`` on both grounds, and the regions stable
   for every ``omega30`` (Figures 5, 7) with this disk's ``h`` marked,
@@ -109,8 +109,8 @@ def steady_trajectory(h: float, ground: str, theta0: float, *, Omega0: float | N
 
     Returns ``(motion, stability, trajectory)``.
     """
-    from .simulate import simulate_steady
-    from .stability import stability
+    from ._simulate import simulate_steady
+    from ._stability import stability
     from .steady import steady_motion
 
     motion = steady_motion(Disk(h), ground, theta0, Omega0=Omega0, r_C=r_C, r_P=r_P)
@@ -143,13 +143,13 @@ def choose_motions(h: float) -> dict:
 
 
 def _best_on_grid(h, score):
-    from .stability import varpi2_circle
+    from ._stability import varpi2_circle
 
     th = np.linspace(0.05, 1.4, 55)
     w = np.linspace(0.15, 2.0, 38)
     TH, W = np.meshgrid(th, w)
     with np.errstate(all="ignore"):
-        v2 = np.asarray(varpi2_circle("rough", h, TH, W), float)
+        v2 = np.asarray(varpi2_circle(h, "rough", TH, W), float)
         s = score(np.where(np.isfinite(v2), v2, np.nan))
     s = np.where(np.isfinite(s), s, -np.inf)
     i = np.unravel_index(int(np.argmax(s)), s.shape)
@@ -188,8 +188,8 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
     from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
 
     from . import plotting
+    from ._stability import thresholds
     from .animation import animate
-    from .stability import thresholds
 
     h = check_h(h)
     out = Path(out_dir)
@@ -249,7 +249,7 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
 
     # 5. the compiled integrator: about 20 s the first time, then loaded from the cache --
     pr.step("integrator (compiled on first use, cached afterwards)")
-    from .simulate import jit_compile
+    from ._simulate import jit_compile
 
     jit_compile()
     pr.done()
@@ -293,8 +293,8 @@ def _floats(d):
 
 
 def _motion_record(motion, stab, traj, kick) -> dict:
+    from ._simulate import growth_rate, oscillation_frequency
     from .plotting import trajectory_series
-    from .simulate import growth_rate, oscillation_frequency
 
     theta = trajectory_series(traj, "theta")
     E = trajectory_series(traj, "E")

@@ -158,7 +158,7 @@ def _steady_record(motion, stab) -> dict:
 
 
 def _run_steady(args) -> int:
-    from .stability import stability
+    from ._stability import stability
 
     motion = _motion_from_args(args, "steady")
     rec = _steady_record(motion, stability(motion))
@@ -199,7 +199,7 @@ def _add_thresholds(sub) -> None:
 
 
 def _run_thresholds(args) -> int:
-    from .stability import thresholds
+    from ._stability import thresholds
 
     d = thresholds(args.h).as_dict()
     if args.json:
@@ -340,8 +340,7 @@ def _run_simulate(args) -> int:
 
     import numpy as np
 
-    from .disk import Disk
-    from .simulate import (
+    from ._simulate import (
         DEFAULT_ATOL,
         DEFAULT_RTOL,
         energy_drift,
@@ -350,7 +349,8 @@ def _run_simulate(args) -> int:
         simulate,
         simulate_steady,
     )
-    from .stability import stability
+    from ._stability import stability
+    from .disk import Disk
 
     disk = Disk(h=args.h)
     motion = _simulate_motion(args)
@@ -521,9 +521,9 @@ def _run_animate(args) -> int:
     _agg()
     import numpy as np
 
+    from ._simulate import simulate_steady
+    from ._stability import stability
     from .animation import animate, writer_for
-    from .simulate import simulate_steady
-    from .stability import stability
 
     writer_for(args.out, args.fps)  # a bad file name fails before the simulation
     _check_out_file(args.out, "animate")

@@ -1,7 +1,7 @@
 """Plots: existence and stability maps of steady motions (sections 3-4) and trajectories.
 
 This module sits outside the numeric core: it calls :mod:`rollingdisk.steady`,
-:mod:`rollingdisk.stability` and :mod:`rollingdisk.equations` and draws what they return.
+:mod:`rollingdisk._stability` and :mod:`rollingdisk.equations` and draws what they return.
 It never re-implements a formula of the paper.  matplotlib is imported only when a plot
 function is called; every function takes ``ax=None`` (a new figure is made when it is
 ``None``), returns what it drew and never calls ``plt.show()``.
@@ -134,7 +134,7 @@ def existence_codes(h: float, theta0, r_C) -> np.ndarray:
     ``UNSTABLE`` by the sign of ``varpi^2`` (eq. 47 route, as corrected in the library).
     Arrays broadcast.
     """
-    from .stability import varpi2_rough_rC
+    from ._stability import varpi2_rough_rC
     from .steady import Omega0_sq
 
     theta0, r_C = np.broadcast_arrays(np.asarray(theta0, float), np.asarray(r_C, float))
@@ -266,7 +266,7 @@ def plot_stability_map(h: float, ground: str, ax=None, *, n=(240, 200),
     section 4.2 puts the top of the surface ``varpi^2 = 0`` at ``omega30 = 2``, h = 0;
     see ``docs/figures.md``).
     """
-    from .stability import varpi2_circle
+    from ._stability import varpi2_circle
 
     h = check_h(h)
     check_ground(ground)
@@ -276,7 +276,7 @@ def plot_stability_map(h: float, ground: str, ax=None, *, n=(240, 200),
     w = np.linspace(0.0, omega30_max, n[1] + 1)[1:]
     TH, W = np.meshgrid(th, w)
     with np.errstate(all="ignore"):
-        v2 = np.asarray(varpi2_circle(ground, h, TH, W), float)
+        v2 = np.asarray(varpi2_circle(h, ground, TH, W), float)
     codes = np.where(np.isfinite(v2) & (v2 > 0), STABLE, UNSTABLE).astype(np.int8)
     cmap, norm = _class_cmap()
     artists = {"mesh": ax.pcolormesh(th, w, codes, cmap=cmap, norm=norm, shading="nearest",
@@ -321,7 +321,7 @@ def plot_all_omega30_stable(ground: str, ax=None, *, n=(240, 200),
     (``theta0 = arctan(3h/2)`` rough, ``arctan(4h/3)`` smooth); ``mark_h`` draws a
     horizontal line at one disk's ``h``.
     """
-    from .stability import stable_for_all_omega30
+    from ._stability import stable_for_all_omega30
 
     check_ground(ground)
     if mark_h is not None:
@@ -332,7 +332,7 @@ def plot_all_omega30_stable(ground: str, ax=None, *, n=(240, 200),
     deg = np.linspace(t_lo, t_hi, n[0] + 2)[1:-1]
     hh = np.linspace(h_range[0], h_range[1], n[1])
     D, H = np.meshgrid(deg, hh)
-    ok = np.asarray(stable_for_all_omega30(ground, H, np.radians(D)), bool)
+    ok = np.asarray(stable_for_all_omega30(H, ground, np.radians(D)), bool)
     cmap, norm = _class_cmap()
     codes = np.where(ok, STABLE, UNSTABLE).astype(np.int8)
     artists = {"mesh": ax.pcolormesh(deg, hh, codes, cmap=cmap, norm=norm, shading="nearest",
@@ -357,7 +357,7 @@ def plot_all_omega30_stable(ground: str, ax=None, *, n=(240, 200),
     return MapPlot(ax, deg, hh, ok, artists)
 
 
-def varpi2_zero_surface(ground: str, h, theta0):
+def varpi2_zero_surface(h, ground: str, theta0):
     """The roots ``omega30 > 0`` of ``varpi^2 = 0`` (eqs. 45 / 55) at each ``(h, theta0)``.
 
     ``varpi^2 omega30^2`` is, for fixed ``(theta0, h)``, a quadratic in ``omega30^2`` over
@@ -369,10 +369,10 @@ def varpi2_zero_surface(ground: str, h, theta0):
     (lower, upper) : ndarrays
         ``omega30`` of the lower and upper sheet, NaN where there is no positive root.
     """
-    from .stability import critical_omega30_sq
+    from ._stability import critical_omega30_sq
 
     check_ground(ground)
-    lower, upper = critical_omega30_sq(ground, h, theta0)
+    lower, upper = critical_omega30_sq(h, ground, theta0)
     with np.errstate(all="ignore"):
         return np.sqrt(np.where(lower > 0, lower, np.nan)), np.sqrt(upper)
 
@@ -383,9 +383,9 @@ def _close_fold(ground, H, TH, lo, hi):
     This moves the drawn fold by at most one grid cell."""
     from scipy.ndimage import binary_dilation
 
-    from .stability import circle_coefficients
+    from ._stability import circle_coefficients
 
-    _, P1, P2, _ = circle_coefficients(ground, H, TH)
+    _, P1, P2, _ = circle_coefficients(H, ground, TH)
     valid = np.isfinite(lo) & np.isfinite(hi)
     with np.errstate(all="ignore"):
         double = -P1 / (2.0 * P2)  # the double root in omega30^2
@@ -412,7 +412,7 @@ def plot_varpi2_surface(ground: str, ax=None, *, n=(80, 80),
     th = np.linspace(theta0_range[0], theta0_range[1], n[0] + 2)[1:-1]
     hh = np.linspace(h_range[0], h_range[1], n[1])
     TH, H = np.meshgrid(th, hh)
-    lo, hi = _close_fold(ground, H, TH, *varpi2_zero_surface(ground, H, TH))
+    lo, hi = _close_fold(ground, H, TH, *varpi2_zero_surface(H, ground, TH))
     artists = {}
     for name, Z, color in (("lower", lo, "tab:orange"), ("upper", hi, "tab:blue")):
         if np.isfinite(Z).any():
@@ -443,7 +443,7 @@ def plot_varpi2_curves(h: float, ground: str, ax=None, *, theta0s=None,
     the tilts are 0.1, the static-equilibrium tilt ``arctan h`` (if ``h > 0``), 0.5 and 1.0
     rad.  Returns ``{"ax": ax, "lines": {theta0: Line2D}}``.
     """
-    from .stability import varpi2_circle
+    from ._stability import varpi2_circle
 
     h = check_h(h)
     check_ground(ground)
@@ -454,7 +454,7 @@ def plot_varpi2_curves(h: float, ground: str, ax=None, *, theta0s=None,
     lines = {}
     for th in sorted(theta0s):
         with np.errstate(all="ignore"):
-            v2 = np.asarray(varpi2_circle(ground, h, th, w), float)
+            v2 = np.asarray(varpi2_circle(h, ground, th, w), float)
         label = f"$\\theta_0 = {th:.3g}$" + (" (SE)" if h > 0 and th == math.atan(h) else "")
         (lines[th],) = ax.plot(w, v2, lw=1.2, label=label)
     ax.axhline(0.0, color="k", lw=0.8)
@@ -472,7 +472,7 @@ def trajectory_series(traj, name: str) -> np.ndarray:
     """A time series of ``traj``: its attribute ``name`` if it has one, else computed from
     ``traj.y`` with :mod:`rollingdisk.equations` (needs ``traj.disk``, ``traj.ground``).
 
-    Works with :class:`rollingdisk.simulate.Trajectory` and any object with ``disk``,
+    Works with :class:`rollingdisk.Trajectory` and any object with ``disk``,
     ``ground``, ``t`` and ``y`` of shape ``(n_state, n)``.
     """
     value = getattr(traj, name, None)

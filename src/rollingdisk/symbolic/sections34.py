@@ -213,7 +213,7 @@ def checks_sections_3_4() -> tuple[Mapping[str, str], ...]:
 def _compute_rows() -> list[dict]:
     import numpy as np
 
-    from ..stability import circle_coefficients, critical_omega30_sq, varpi2_circle
+    from .._stability import circle_coefficients, critical_omega30_sq, varpi2_circle
     from ..steady import r_C_star, se_circle_radius
 
     rows: list[dict] = []
@@ -524,7 +524,7 @@ def _compute_rows() -> list[dict]:
              "in r_C, so (45) becomes quadratic/linear (R, Q not printed); the library's "
              "varpi2_rough_rC agrees with the linearization "
              "(tests/test_stability.py::test_rC_route_agrees)"))
-    lim = varpi2_circle("rough", 1e6, 0.0, 1.3)
+    lim = varpi2_circle(1e6, "rough", 0.0, 1.3)
     add(_num_row("text before Fig. 6", "theta0 = 0, h -> inf: varpi^2 -> (omega30^2 - 1)/2",
                  float(lim) / (0.5 * (1.3 ** 2 - 1)), 1.0, 1e-5, "ratio at h = 1e6, omega30 = 1.3"))
     sup_r = _sup_critical("rough", critical_omega30_sq)
@@ -532,7 +532,7 @@ def _compute_rows() -> list[dict]:
                  "omega30^2 > 1", sup_r, 1.0, 1e-3,
                  "sup of the varpi^2 = 0 surface over h in [0, 1e4], theta0 in (0, pi/2) "
                  "(approached as h -> inf at theta0 -> 0)"))
-    a48 = float(varpi2_circle("rough", 2.0, math.pi / 2 - 1e-7, 0.7)) / (
+    a48 = float(varpi2_circle(2.0, "rough", math.pi / 2 - 1e-7, 0.7)) / (
         0.49 * math.tan(math.pi / 2 - 1e-7) ** 2)
     add({"equation": "(48)", "status": "misprint" if abs(a48 - 2 * 35 / 79) > 1e-2 else
          "confirmed",
@@ -595,7 +595,7 @@ def _compute_rows() -> list[dict]:
              "sympy: -Delta/(144 (3+4h^2)^2 (1+p0^2)); the printed 'h' in 4h p0^3 is h~ "
              "(the same for theta0 > 0)"))
     t215 = _boundary("smooth", 0.0)
-    _, hi215 = critical_omega30_sq("smooth", 0.0, t215 - 1e-9)
+    _, hi215 = critical_omega30_sq(0.0, "smooth", t215 - 1e-9)
     add(_num_row("text after (59)", "great h: theta0 > arctan(4h/3)",
                  math.tan(_right_boundary("smooth", 1e4)) / 1e4, 4 / 3, 1e-3,
                  "tan(right boundary)/h at h = 1e4"))
@@ -605,14 +605,14 @@ def _compute_rows() -> list[dict]:
                  math.sqrt(6 * math.sqrt(3) - 9) / 3, 1e-10, "tan of the boundary"))
     add(_num_row("text after (59)", "limit omega30 ~ 1.167", math.sqrt(float(hi215)), 1.167,
                  5e-4, "double root of (58) at the boundary"))
-    _, hi0 = critical_omega30_sq("smooth", 0.0, 0.0)
-    _, hih = critical_omega30_sq("smooth", 0.5, 0.0)
+    _, hi0 = critical_omega30_sq(0.0, "smooth", 0.0)
+    _, hih = critical_omega30_sq(0.5, "smooth", 0.0)
     add(_num_row("text before Conclusion", "theta0 = 0, h = 0: omega30 = 2",
                  math.sqrt(float(hi0)), 2.0, 1e-9, "varpi^2 = 0 surface at theta0 -> 0+"))
     add(_num_row("text before Conclusion", "theta0 = 0: h limited to 1/2 with omega30 = "
                  "sqrt(3/2) ~ 1.225", math.sqrt(float(hih)), math.sqrt(1.5), 1e-9,
                  "double root at h = 1/2, theta0 -> 0+ (no real root for h > 1/2: "
-                 f"{bool(np.isnan(critical_omega30_sq('smooth', 0.51, 0.0)[1]))})"))
+                 f"{bool(np.isnan(critical_omega30_sq(0.51, 'smooth', 0.0)[1]))})"))
     sup_s = _sup_critical("smooth", critical_omega30_sq)
     add({"equation": "text before Conclusion / Conclusion", "status": "misprint",
          "printed": "smooth: stable for any h and theta0 if omega30^2 > 2",
@@ -651,10 +651,10 @@ def _printed_P0_boundary() -> float:
     """h = 0 rough boundary of 'P1 > 0 or Delta < 0' with the printed P0 = 144 p0^2."""
     from scipy.optimize import brentq
 
-    from ..stability import circle_coefficients
+    from .._stability import circle_coefficients
 
     def f(t):
-        P0, P1, P2, _ = circle_coefficients("rough", 0.0, t)
+        P0, P1, P2, _ = circle_coefficients(0.0, "rough", t)
         P0 = P0 / math.sqrt(1 + math.tan(t) ** 2)  # undo the correction
         return float((P1 >= 0) or (P1 * P1 - 4 * P0 * P2 < 0)) - 0.5
 
@@ -664,9 +664,9 @@ def _printed_P0_boundary() -> float:
 def _boundary(ground: str, h: float) -> float:
     from scipy.optimize import brentq
 
-    from ..stability import stable_for_all_omega30
+    from .._stability import stable_for_all_omega30
 
-    return brentq(lambda t: float(stable_for_all_omega30(ground, h, t)) - 0.5, 0.05, 0.7,
+    return brentq(lambda t: float(stable_for_all_omega30(h, ground, t)) - 0.5, 0.05, 0.7,
                   xtol=1e-15)
 
 
@@ -674,12 +674,12 @@ def _right_boundary(ground: str, h: float) -> float:
     import numpy as np
     from scipy.optimize import brentq
 
-    from ..stability import stable_for_all_omega30
+    from .._stability import stable_for_all_omega30
 
     th = np.linspace(1e-6, math.pi / 2 - 1e-10, 100001)
-    ok = stable_for_all_omega30(ground, h, th)
+    ok = stable_for_all_omega30(h, ground, th)
     i = int(np.nonzero(~ok)[0].max())
-    return brentq(lambda t: float(stable_for_all_omega30(ground, h, t)) - 0.5, th[i],
+    return brentq(lambda t: float(stable_for_all_omega30(h, ground, t)) - 0.5, th[i],
                   th[i + 1], xtol=1e-15)
 
 
@@ -688,7 +688,7 @@ def _sup_critical(ground: str, critical: Callable) -> float:
 
     H = np.concatenate([np.linspace(0, 5, 501), np.geomspace(5, 1e4, 200)])[:, None]
     T = np.concatenate([[0.0], np.linspace(1e-4, math.pi / 2 - 1e-4, 1500)])[None, :]
-    _, hi = critical(ground, H, T)
+    _, hi = critical(H, ground, T)
     return float(np.nanmax(hi))
 
 

@@ -95,7 +95,7 @@ class Stability:
 # ---------------------------------------------------------------------------------------
 # closed forms in (omega20, omega30): eqs. (40)-(41) and (51)
 # ---------------------------------------------------------------------------------------
-def varpi2_closed_form(ground: str, h, theta0, omega20, omega30):
+def varpi2_closed_form(h, ground: str, theta0, omega20, omega30):
     """``varpi^2`` at a steady state, eq. (40)-(41) (rough) or eq. (51) (smooth).
 
     Parameters
@@ -161,7 +161,7 @@ def stability(motion: SteadyMotion) -> Stability:
     """
     if not isinstance(motion, SteadyMotion):
         raise ValueError(f"motion must be a SteadyMotion, got {type(motion).__name__}")
-    v = float(varpi2_closed_form(motion.ground, motion.h, motion.theta0, motion.omega20,
+    v = float(varpi2_closed_form(motion.h, motion.ground, motion.theta0, motion.omega20,
                                  motion.omega30))
     if not math.isfinite(v):
         raise ValueError(f"varpi^2 of this steady motion is not a finite number ({v}): "
@@ -180,7 +180,7 @@ def _reduced_rhs(ground, h, x):
     return np.array([w1, d1, d2, d3])
 
 
-def reduced_jacobian(ground: str, h: float, theta0: float, omega20: float,
+def reduced_jacobian(h: float, ground: str, theta0: float, omega20: float,
                      omega30: float) -> np.ndarray:
     """Jacobian of the reduced system ``d/dt (theta, omega1, omega2, omega3)`` at a steady state.
 
@@ -257,7 +257,7 @@ def varpi2_linearized(motion: SteadyMotion) -> float:
     """
     if not isinstance(motion, SteadyMotion):
         raise ValueError(f"motion must be a SteadyMotion, got {type(motion).__name__}")
-    J = reduced_jacobian(motion.ground, motion.h, motion.theta0, motion.omega20,
+    J = reduced_jacobian(motion.h, motion.ground, motion.theta0, motion.omega20,
                          motion.omega30)
     return float(-0.5 * np.trace(J @ J))
 
@@ -265,7 +265,7 @@ def varpi2_linearized(motion: SteadyMotion) -> float:
 # ---------------------------------------------------------------------------------------
 # circles in terms of omega30: eqs. (45)-(46) and (55)-(56)
 # ---------------------------------------------------------------------------------------
-def circle_coefficients(ground: str, h, theta0):
+def circle_coefficients(h, ground: str, theta0):
     """``(P0, P1, P2, den)`` with ``varpi^2 = (P2 w^4 + P1 w^2 + P0) / (den w^2)``, ``w = omega30``.
 
     Parameters
@@ -310,7 +310,7 @@ def circle_coefficients(ground: str, h, theta0):
     return P0 + out, P1 + out, P2 + out, den + out
 
 
-def varpi2_circle(ground: str, h, theta0, omega30):
+def varpi2_circle(h, ground: str, theta0, omega30):
     """``varpi^2`` of the steady circle with given ``omega30``: eq. (45) corrected / (55).
 
     Arrays in (broadcast), array out; NaN where ``omega30 = 0`` or outside
@@ -318,7 +318,7 @@ def varpi2_circle(ground: str, h, theta0, omega30):
     """
     h, t, w = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (h, theta0, omega30)))
     with np.errstate(all="ignore"):
-        P0, P1, P2, den = circle_coefficients(ground, h, t)
+        P0, P1, P2, den = circle_coefficients(h, ground, t)
         w2 = w * w
         out = (P2 * w2 * w2 + P1 * w2 + P0) / (den * w2)
     return np.where(_map_domain(h, t) & (w != 0), out, np.nan)[()]
@@ -334,10 +334,10 @@ def varpi2_rough_rC(h, theta0, r_C):
     with np.errstate(all="ignore"):
         ok = Om2 > 0
         w = np.sqrt(np.where(ok, Om2, np.nan)) * np.cos(theta0)
-        return np.where(ok, varpi2_circle("rough", h, theta0, w), np.nan)[()]
+        return np.where(ok, varpi2_circle(h, "rough", theta0, w), np.nan)[()]
 
 
-def critical_omega30_sq(ground: str, h, theta0):
+def critical_omega30_sq(h, ground: str, theta0):
     """The ``varpi^2 = 0`` surface (Figures 6, 8): roots ``(lower, upper)`` in ``omega30^2``.
 
     Parameters
@@ -355,7 +355,7 @@ def critical_omega30_sq(ground: str, h, theta0):
     Circles with ``lower < omega30^2 < upper`` are unstable, all others stable.  Both NaN
     where there is no real positive root (stable for every ``omega30``).
     """
-    P0, P1, P2, den = circle_coefficients(ground, h, theta0)
+    P0, P1, P2, den = circle_coefficients(h, ground, theta0)
     with np.errstate(all="ignore"):
         D = P1 * P1 - 4.0 * P0 * P2
         sD = np.sqrt(np.where(D >= 0, D, np.nan))
@@ -365,7 +365,7 @@ def critical_omega30_sq(ground: str, h, theta0):
     return np.where(ok, np.maximum(lo, 0.0), np.nan)[()], np.where(ok, hi, np.nan)[()]
 
 
-def stable_for_all_omega30(ground: str, h, theta0):
+def stable_for_all_omega30(h, ground: str, theta0):
     """Where every steady circle is stable, whatever ``omega30``: regions (46) / (59).
 
     Parameters
@@ -387,7 +387,7 @@ def stable_for_all_omega30(ground: str, h, theta0):
     outside the domain).
     """
     h_a, t_a = np.broadcast_arrays(np.asarray(h, dtype=float), np.asarray(theta0, dtype=float))
-    lower, upper = critical_omega30_sq(ground, h_a, t_a)  # no positive root: stable for all
+    lower, upper = critical_omega30_sq(h_a, ground, t_a)  # no positive root: stable for all
     return (np.isnan(upper) & _map_domain(h_a, t_a))[()]
 
 
