@@ -8,17 +8,23 @@ import pytest
 import rollingdisk as rd
 
 
-@pytest.mark.parametrize("bad", [-1, -1e-9, math.nan, math.inf, -math.inf, "0.2", None, True,
-                                 [0.1], 1j, 1e200])
-def test_disk_rejects_bad_h(bad):
-    with pytest.raises(ValueError, match=r"h must .*\[0, 1e\+08\]"):
+@pytest.mark.parametrize("bad", [-1, -1e-9, math.nan, math.inf, -math.inf, 1e200])
+def test_disk_rejects_bad_h_value(bad):
+    with pytest.raises(rd.ParameterError, match=r"h must .*\[0, 1e\+08\]"):
+        rd.Disk(h=bad)
+
+
+@pytest.mark.parametrize("bad", ["0.2", None, True, [0.1], 1j])
+def test_disk_rejects_bad_h_type(bad):
+    """A wrong type is a TypeError, as in numpy and scipy (issue 8, defect 3)."""
+    with pytest.raises(rd.ParameterTypeError, match=r"h must .*\[0, 1e\+08\]"):
         rd.Disk(h=bad)
 
 
 @pytest.mark.parametrize("name", ["radius", "mass", "gravity"])
 @pytest.mark.parametrize("bad", [0.0, -1.0, math.nan, math.inf, "x"])
 def test_disk_rejects_bad_scale(name, bad):
-    with pytest.raises(ValueError, match=name):
+    with pytest.raises((ValueError, TypeError), match=name):
         rd.Disk(h=0.1, **{name: bad})
 
 

@@ -9,15 +9,16 @@ only numpy and scipy (and numba, lazily, when the integrator first runs); ``symb
 ``plotting``, ``figures``, ``animation``, ``atlas`` and ``cli`` are the edges that use it.
 """
 
-from . import _simulate, _stability, disk, equations, steady
+from . import _simulate, _stability, disk, equations, errors, steady
 from ._simulate import *  # noqa: F403
 from ._stability import *  # noqa: F403
 from .disk import *  # noqa: F403
 from .equations import *  # noqa: F403
+from .errors import *  # noqa: F403
 from .steady import *  # noqa: F403
 
 __version__ = "0.1.0"
 
-__all__ = [*disk.__all__, *equations.__all__, *steady.__all__, *_stability.__all__,
+__all__ = [*errors.__all__, *disk.__all__, *equations.__all__, *steady.__all__, *_stability.__all__,
            *_simulate.__all__]
 del _simulate, _stability

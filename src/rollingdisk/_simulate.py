@@ -45,6 +45,7 @@ from .equations import (
     state_index,
     state_names,
 )
+from .errors import ParameterError
 
 __all__ = [
     "STATUSES",
@@ -273,19 +274,19 @@ def _check_state(disk: Disk, ground: str, y0) -> np.ndarray:
     try:
         y = np.array(y0, dtype=float)
     except (TypeError, ValueError):
-        raise ValueError(f"y0 must be a sequence of {len(names)} real numbers "
+        raise ParameterError(f"y0 must be a sequence of {len(names)} real numbers "
                          f"({', '.join(names)}), got {y0!r}") from None
     if y.shape != (len(names),):
-        raise ValueError(f"y0 must have {len(names)} components on {ground} ground "
+        raise ParameterError(f"y0 must have {len(names)} components on {ground} ground "
                          f"({', '.join(names)}), got shape {y.shape}")
     if not np.all(np.isfinite(y)):
-        raise ValueError(f"y0 must be finite, got {y.tolist()}")
+        raise ParameterError(f"y0 must be finite, got {y.tolist()}")
     theta = y[names.index("theta")]
     if abs(theta) >= 0.5 * math.pi:
-        raise ValueError(f"theta in y0 must lie in (-pi/2, pi/2) (|theta| = pi/2: the disk "
+        raise ParameterError(f"theta in y0 must lie in (-pi/2, pi/2) (|theta| = pi/2: the disk "
                          f"lies flat), got {theta!r}")
     if disk.h > 0 and theta == 0.0:
-        raise ValueError("theta in y0 must be nonzero for a disk of finite thickness (h > 0):"
+        raise ParameterError("theta in y0 must be nonzero for a disk of finite thickness (h > 0):"
                          " at theta = 0 it stands on a line of its rim, outside the model")
     return y
 
@@ -354,16 +355,16 @@ def simulate(disk: Disk, ground: str, y0, t_span: Sequence[float], *,
     ('completed', True)
     """
     if not isinstance(disk, Disk):
-        raise ValueError(f"disk must be a rollingdisk.Disk, got {disk!r}")
+        raise ParameterError(f"disk must be a rollingdisk.Disk, got {disk!r}")
     ground = check_ground(ground)
     y = _check_state(disk, ground, y0)
     try:
         t0, t1 = (float(v) for v in t_span)
     except (TypeError, ValueError):
-        raise ValueError(f"t_span must be a pair (t0, t1) of real numbers, got {t_span!r}") \
+        raise ParameterError(f"t_span must be a pair (t0, t1) of real numbers, got {t_span!r}") \
             from None
     if not (math.isfinite(t0) and math.isfinite(t1) and t1 > t0):
-        raise ValueError(f"t_span must be a pair (t0, t1) of finite numbers with t1 > t0, "
+        raise ParameterError(f"t_span must be a pair (t0, t1) of finite numbers with t1 > t0, "
                          f"got {t_span!r}")
     rtol = check_real("rtol", rtol, low=0.0, low_open=True)
     atol = check_real("atol", atol, low=0.0, low_open=True)
@@ -373,14 +374,14 @@ def simulate(disk: Disk, ground: str, y0, t_span: Sequence[float], *,
         "first_step", first_step, low=0.0, low_open=True)
     if isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer)) \
             or max_steps < 1:
-        raise ValueError(f"max_steps must be an integer >= 1, got {max_steps!r}")
+        raise ParameterError(f"max_steps must be an integer >= 1, got {max_steps!r}")
     if method not in _METHODS:
-        raise ValueError(f"method must be one of {_METHODS}, got {method!r}")
+        raise ParameterError(f"method must be one of {_METHODS}, got {method!r}")
     if t_eval is not None:
         t_eval = np.asarray(t_eval, dtype=float).ravel()
         if (t_eval.size == 0 or not np.all(np.isfinite(t_eval)) or np.any(np.diff(t_eval) < 0)
                 or t_eval[0] < t0 or t_eval[-1] > t1):
-            raise ValueError("t_eval must be a non-empty increasing sequence of times within "
+            raise ParameterError("t_eval must be a non-empty increasing sequence of times within "
                              f"t_span = ({t0:g}, {t1:g})")
     if events is not None and callable(events):
         events = [events]
@@ -389,7 +390,7 @@ def simulate(disk: Disk, ground: str, y0, t_span: Sequence[float], *,
     if method == "auto":
         method = "scipy" if events is not None else "dop853"
     if method == "dop853" and events is not None:
-        raise ValueError("method='dop853' takes no user events; use method='scipy' "
+        raise ParameterError("method='dop853' takes no user events; use method='scipy' "
                          "(or 'auto') for events")
     use = np.array([guards, guards and disk.h > 0, guards], dtype=np.bool_)
     if method == "scipy":
@@ -593,7 +594,7 @@ def simulate_steady(motion, t_end: float, *, perturb: float = 0.0, kick: float =
     """
     for name in ("ground", "h", "theta0", "initial_state"):
         if not hasattr(motion, name):
-            raise ValueError(f"motion must be a SteadyMotion (it has no {name!r})")
+            raise ParameterError(f"motion must be a SteadyMotion (it has no {name!r})")
     t_end = check_real("t_end", t_end, low=0.0, low_open=True)
     perturb = check_real("perturb", perturb)
     kick = check_real("kick", kick)
@@ -608,7 +609,7 @@ def simulate_steady(motion, t_end: float, *, perturb: float = 0.0, kick: float =
         allowed = f"({-0.5 * math.pi - theta0:.6g}, {0.5 * math.pi - theta0:.6g})"
         if disk.h > 0:
             allowed += f" other than {-theta0:.6g} (theta = 0 is outside the model for h > 0)"
-        raise ValueError(f"perturb must lie in {allowed}, so that theta(0) = theta0 + perturb "
+        raise ParameterError(f"perturb must lie in {allowed}, so that theta(0) = theta0 + perturb "
                          f"stays in (-pi/2, pi/2); got perturb = {perturb!r}, theta(0) = "
                          f"{theta!r}")
     y0[i_theta] = theta
@@ -800,7 +801,7 @@ def fit_circle(x, y) -> tuple[float, float, float]:
     x = np.asarray(x, dtype=float).ravel()
     y = np.asarray(y, dtype=float).ravel()
     if x.shape != y.shape or x.size < 3:
-        raise ValueError("x and y must be equally long with at least 3 points")
+        raise ParameterError("x and y must be equally long with at least 3 points")
     mx, my = x.mean(), y.mean()
     u, v = x - mx, y - my
     M = np.column_stack([u, v, np.ones_like(u)])

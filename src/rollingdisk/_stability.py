@@ -23,6 +23,7 @@ import numpy as np
 
 from .disk import check_ground, check_h, check_real
 from .equations import _rough_omega_dot, _smooth_omega_dot
+from .errors import ParameterError
 from .steady import Omega0_sq, SteadyMotion, _h_tilde_map, _map_domain
 
 __all__ = [
@@ -160,11 +161,11 @@ def stability(motion: SteadyMotion) -> Stability:
     True
     """
     if not isinstance(motion, SteadyMotion):
-        raise ValueError(f"motion must be a SteadyMotion, got {type(motion).__name__}")
+        raise ParameterError(f"motion must be a SteadyMotion, got {type(motion).__name__}")
     v = float(varpi2_closed_form(motion.h, motion.ground, motion.theta0, motion.omega20,
                                  motion.omega30))
     if not math.isfinite(v):
-        raise ValueError(f"varpi^2 of this steady motion is not a finite number ({v}): "
+        raise ParameterError(f"varpi^2 of this steady motion is not a finite number ({v}): "
                          "its speeds are beyond floating-point range (Omega0 too large or too "
                          "small)")
     return Stability(v)
@@ -256,7 +257,7 @@ def varpi2_linearized(motion: SteadyMotion) -> float:
     nothing.  The structure (two zero eigenvalues) is checked in the tests.
     """
     if not isinstance(motion, SteadyMotion):
-        raise ValueError(f"motion must be a SteadyMotion, got {type(motion).__name__}")
+        raise ParameterError(f"motion must be a SteadyMotion, got {type(motion).__name__}")
     J = reduced_jacobian(motion.h, motion.ground, motion.theta0, motion.omega20,
                          motion.omega30)
     return float(-0.5 * np.trace(J @ J))

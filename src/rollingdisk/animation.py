@@ -28,6 +28,7 @@ import numpy as np
 
 from .disk import check_h, check_real
 from .equations import _geometry
+from .errors import ParameterError
 from .plotting import trajectory_series
 
 __all__ = ["DiskPose", "body_frame", "disk_pose", "poses", "draw_disk", "animate",
@@ -163,10 +164,10 @@ def writer_for(path, fps: int):
         return mpl_animation.PillowWriter(fps=fps)
     if suffix == ".mp4":
         if shutil.which("ffmpeg") is None:
-            raise ValueError("out: writing .mp4 needs ffmpeg, which was not found; "
+            raise ParameterError("out: writing .mp4 needs ffmpeg, which was not found; "
                              "use a .gif file name instead")
         return mpl_animation.FFMpegWriter(fps=fps)
-    raise ValueError(f"out must end in .gif or .mp4, got {str(path)!r}")
+    raise ParameterError(f"out must end in .gif or .mp4, got {str(path)!r}")
 
 
 def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,

@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from .disk import Disk, check_h, check_real
+from .errors import ParameterError
 
 __all__ = ["AtlasResult", "build_atlas", "choose_motions", "steady_trajectory",
            "DEFAULT_H"]
@@ -154,7 +155,7 @@ def _best_on_grid(h, score):
     s = np.where(np.isfinite(s), s, -np.inf)
     i = np.unravel_index(int(np.argmax(s)), s.shape)
     if not np.isfinite(s[i]):
-        raise ValueError(f"h = {h:g}: found no steady circle of the requested kind")
+        raise ParameterError(f"h = {h:g}: found no steady circle of the requested kind")
     return float(TH[i]), float(W[i])
 
 

@@ -12,6 +12,7 @@ import sys
 from collections.abc import Sequence
 
 from .atlas import DEFAULT_H  # the default disk of the picture commands
+from .errors import ParameterError
 
 __all__ = ["main", "parse_angle"]
 
@@ -379,7 +380,7 @@ def _run_simulate(args) -> int:
             y0[state_index(args.ground, "theta")] += args.perturb
             y0[state_index(args.ground, "omega1")] += args.kick
             if not (math.isfinite(args.t_end) and args.t_end > 0):
-                raise ValueError(f"t_end must be a finite number > 0, got {args.t_end!r}")
+                raise ParameterError(f"t_end must be a finite number > 0, got {args.t_end!r}")
             traj = simulate(disk, args.ground, y0, (0.0, args.t_end), **options)
     finally:
         if notice is not None:

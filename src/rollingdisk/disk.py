@@ -13,6 +13,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .errors import ParameterError, ParameterTypeError
+
 __all__ = ["Disk", "GROUNDS", "H_MAX", "check_ground", "check_h", "check_real", "h_tilde"]
 
 #: The two kinds of ground the theory covers: no slip, or no friction.
@@ -28,9 +30,10 @@ STANDARD_GRAVITY = 9.80665
 
 def check_real(name: str, value, *, low: float | None = None, high: float | None = None,
                low_open: bool = False, high_open: bool = False) -> float:
-    """Return ``value`` as a float, or raise ``ValueError`` naming ``name`` and the range.
+    """Return ``value`` as a float, or raise naming ``name`` and the allowed range.
 
-    Booleans, strings and other non-numbers, NaN and infinities are rejected.
+    Booleans, strings and other non-numbers raise :class:`ParameterTypeError`; NaN,
+    infinities and values out of range raise :class:`ParameterError`.
     """
     lo = "-inf" if low is None else f"{low:g}"
     hi = "inf" if high is None else f"{high:g}"
@@ -38,14 +41,15 @@ def check_real(name: str, value, *, low: float | None = None, high: float | None
     right = ")" if high is None or high_open else "]"
     allowed = f"{left}{lo}, {hi}{right}"
     if isinstance(value, bool) or not isinstance(value, (int, float)) and not _is_numpy_real(value):
-        raise ValueError(f"{name} must be a real number in {allowed}, got {value!r}")
+        raise ParameterTypeError(f"{name} must be a real number in {allowed}, got "
+                                 f"{type(value).__name__} {value!r}")
     x = float(value)
     if not math.isfinite(x):
-        raise ValueError(f"{name} must be a finite real number in {allowed}, got {x!r}")
+        raise ParameterError(f"{name} must be a finite real number in {allowed}, got {x!r}")
     if low is not None and (x < low or (low_open and x == low)):
-        raise ValueError(f"{name} must lie in {allowed}, got {x!r}")
+        raise ParameterError(f"{name} must lie in {allowed}, got {x!r}")
     if high is not None and (x > high or (high_open and x == high)):
-        raise ValueError(f"{name} must lie in {allowed}, got {x!r}")
+        raise ParameterError(f"{name} must lie in {allowed}, got {x!r}")
     return x
 
 
@@ -72,7 +76,7 @@ def h_tilde(h: float, theta: float) -> float:
 def check_ground(ground) -> str:
     """Return ``ground`` if it is ``"rough"`` or ``"smooth"``, else raise ``ValueError``."""
     if ground not in GROUNDS:
-        raise ValueError(f"ground must be one of {GROUNDS}, got {ground!r}")
+        raise ParameterError(f"ground must be one of {GROUNDS}, got {ground!r}")
     return ground
 
 
@@ -157,7 +161,7 @@ class Disk:
     def _need(self, *names: str) -> None:
         missing = [n for n in names if getattr(self, n) is None]
         if missing:
-            raise ValueError(
+            raise ParameterError(
                 f"this Disk has no physical scale: give {' and '.join(missing)} "
                 f"(e.g. Disk(h={self.h:g}, radius=0.05, mass=0.4)) to convert to SI units"
             )

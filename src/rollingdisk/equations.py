@@ -31,6 +31,7 @@ from collections.abc import Callable
 import numpy as np
 
 from .disk import Disk, check_ground
+from .errors import ParameterError
 
 __all__ = [
     "ROUGH_STATE",
@@ -60,7 +61,7 @@ def state_index(ground: str, name: str) -> int:
     """Index of the component ``name`` in the state vector of ``ground``."""
     names = state_names(ground)
     if name not in names:
-        raise ValueError(f"name must be one of {names} on {ground} ground, got {name!r}")
+        raise ParameterError(f"name must be one of {names} on {ground} ground, got {name!r}")
     return names.index(name)
 
 
@@ -165,7 +166,7 @@ def _as_state(ground: str, y) -> np.ndarray:
     y = np.asarray(y, dtype=float)
     n = len(state_names(ground))
     if y.shape[:1] != (n,):
-        raise ValueError(
+        raise ParameterError(
             f"y must have {n} components on {ground} ground ({', '.join(state_names(ground))}),"
             f" got shape {y.shape}"
         )

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from . import plotting
 from .disk import check_real
+from .errors import ParameterError
 
 __all__ = ["FIGURE_HS", "figure4", "figure5", "figure6", "figure7", "figure8",
            "paper_figures", "FIGURES"]
@@ -120,7 +121,7 @@ def paper_figures(out_dir, *, scale: float = 1.0, dpi: int = 110,
     names = list(FIGURES) if only is None else list(only)
     for name in names:
         if name not in FIGURES:
-            raise ValueError(f"figure must be one of {tuple(FIGURES)}, got {name!r}")
+            raise ParameterError(f"figure must be one of {tuple(FIGURES)}, got {name!r}")
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     paths = []

@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .disk import check_ground, check_h, check_real
+from .errors import ParameterError
 
 __all__ = [
     "NO_MOTION",
@@ -202,7 +203,7 @@ def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200)
     check_ground(ground)
     ax = _axes(ax)
     if r_C_scale not in ("symlog", "linear"):
-        raise ValueError(f"r_C_scale must be 'symlog' or 'linear', got {r_C_scale!r}")
+        raise ParameterError(f"r_C_scale must be 'symlog' or 'linear', got {r_C_scale!r}")
     lo, hi = r_C_range or _default_r_C_range(h, r_C_scale)
     th = _theta_grid(n[0])
     rc = _r_C_grid(lo, hi, n[1], r_C_scale, linthresh)
@@ -491,7 +492,7 @@ def trajectory_series(traj, name: str) -> np.ndarray:
         return np.broadcast_to(np.asarray(F, float), y.shape[1:]).copy()
     if name == "E":
         return np.asarray(eq.energy(traj.disk, traj.ground, y), float)
-    raise ValueError(f"unknown series {name!r}")
+    raise ParameterError(f"unknown series {name!r}")
 
 
 def plot_paths(traj, ax=None, *, title: str | None = None) -> dict:

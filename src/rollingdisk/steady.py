@@ -32,6 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .disk import Disk, check_ground, check_h, check_real, h_tilde
+from .errors import ParameterError
 
 __all__ = [
     "NoSteadyMotion",
@@ -47,7 +48,7 @@ __all__ = [
 SE_TOL = 1e-12
 
 
-class NoSteadyMotion(ValueError):
+class NoSteadyMotion(ParameterError):
     """No steady motion exists for the requested parameters (the message says which work)."""
 
 
@@ -157,7 +158,7 @@ def _check_theta0(disk: Disk, theta0) -> float:
     theta0 = check_real("theta0", theta0, low=-math.pi / 2, high=math.pi / 2,
                         low_open=True, high_open=True)
     if theta0 == 0.0 and disk.h > 0.0:
-        raise ValueError(
+        raise ParameterError(
             "theta0 must lie in (-pi/2, 0) or (0, pi/2) for a disk of finite thickness "
             "(h > 0): at theta0 = 0 the disk touches the plane along a line, which the theory "
             "excludes (section 2)"
@@ -278,12 +279,12 @@ def steady_motion(disk: Disk, ground: str, theta0: float, *, Omega0: float | Non
     """
     ground = check_ground(ground)
     if not isinstance(disk, Disk):
-        raise ValueError(f"disk must be a Disk, got {type(disk).__name__}")
+        raise ParameterError(f"disk must be a Disk, got {type(disk).__name__}")
     theta0 = _check_theta0(disk, theta0)
     given = [(n, v) for n, v in (("Omega0", Omega0), ("r_C", r_C), ("r_P", r_P))
              if v is not None]
     if len(given) != 1:
-        raise ValueError("give exactly one of Omega0, r_C, r_P "
+        raise ParameterError("give exactly one of Omega0, r_C, r_P "
                          f"(got {', '.join(n for n, _ in given) or 'none'})")
     name, value = given[0]
     value = check_real(name, value)
@@ -314,7 +315,7 @@ def steady_motion(disk: Disk, ground: str, theta0: float, *, Omega0: float | Non
                 f"on smooth ground the centre C is at rest in every steady circle: r_C = 0 and "
                 f"r_P = y_P0 = {y_P:.6g} at theta0 = {theta0:.6g} rad, so {name} = {value:.6g} "
                 "is impossible; give Omega0 (any non-zero value) instead")
-        raise ValueError(
+        raise ParameterError(
             f"on smooth ground {name} = {value:.6g} holds for every Omega0 at theta0 = "
             f"{theta0:.6g} rad; give Omega0 instead")
 
@@ -328,7 +329,7 @@ def steady_motion(disk: Disk, ground: str, theta0: float, *, Omega0: float | Non
                 f"at the static-equilibrium tilt theta0 = arctan(h) = {theta0:.6g} rad "
                 f"({deg:.4g} deg) every steady circle has r_C = r_P = {r_se:.6g} (eq. 30), "
                 f"not {name} = {value:.6g}; choose another theta0 for other radii")
-        raise ValueError(
+        raise ParameterError(
             f"at the static-equilibrium tilt r_C = r_P = {r_se:.6g} for every Omega0 (eq. 30):"
             " give Omega0 instead")
     N, A, B = _rough_Omega0_sq_parts(h, ht, s, c, p)
@@ -377,10 +378,10 @@ def straight_line(disk: Disk, ground: str, omega0: float, *, v_Cx0: float | None
     """
     ground = check_ground(ground)
     if not isinstance(disk, Disk):
-        raise ValueError(f"disk must be a Disk, got {type(disk).__name__}")
+        raise ParameterError(f"disk must be a Disk, got {type(disk).__name__}")
     omega0 = check_real("omega0", omega0)
     if isinstance(lean, bool) or lean not in (1, -1):
-        raise ValueError(f"lean must be 1 or -1, got {lean!r}")
+        raise ParameterError(f"lean must be 1 or -1, got {lean!r}")
     if theta0 is not None:
         theta0 = check_real("theta0", theta0)
         lean = -1 if theta0 < 0 else 1

@@ -1,0 +1,153 @@
+"""Output files and folders that appear whole or not at all.
+
+Every file the library or the command line writes goes through :func:`atomic_file` (a
+temporary name in the destination folder, renamed over the target at the end) and every
+folder of results through :func:`atomic_dir` (built under a temporary name beside the
+target, swapped in at the end).  On any exception, ``KeyboardInterrupt`` and
+:class:`Terminated` (SIGTERM, see :func:`terminate_as_exception`) included, the temporary
+is removed and the target is left as it was.  :func:`check_writable` refuses a destination
+before the work, not after it.
+
+Permissions follow the umask, as for a file created with ``open``.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import shutil
+import signal
+import tempfile
+from collections.abc import Iterator
+from pathlib import Path
+
+from .errors import ParameterError
+
+__all__ = ["Terminated", "atomic_file", "atomic_dir", "check_writable",
+           "terminate_as_exception"]
+
+
+class Terminated(BaseException):  # noqa: N818 - named like KeyboardInterrupt
+    """Raised in the main thread on SIGTERM while :func:`terminate_as_exception` is active."""
+
+
+@contextlib.contextmanager
+def terminate_as_exception() -> Iterator[None]:
+    """Turn SIGTERM into a :class:`Terminated` exception (main thread only), so that the
+    clean-up of :func:`atomic_file` and :func:`atomic_dir` runs as it does on Ctrl-C."""
+    def handler(signum, frame):
+        raise Terminated(f"terminated by signal {signum}")
+
+    try:
+        old = signal.signal(signal.SIGTERM, handler)
+    except ValueError:  # not the main thread: leave the signal alone
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, old)
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def check_writable(path, *, name: str = "out", folder: bool = False) -> Path:
+    """Refuse, before any work, a destination that cannot be written.
+
+    Parameters
+    ----------
+    path : path-like
+        The file (or, with ``folder=True``, the folder) to be written.
+    name : str
+        The parameter's name for the message.
+    folder : bool
+        ``path`` is a folder of results (created if missing, replaced as a whole).
+
+    Returns
+    -------
+    Path
+        The absolute path.
+
+    Raises
+    ------
+    ParameterError
+        If the parent folder is missing or not writable, the target is of the wrong kind
+        (a folder given for a file or the reverse), or an existing file is read-only.
+    """
+    target = Path(os.path.abspath(os.fspath(path)))
+    parent = target.parent
+    if not parent.is_dir():
+        raise ParameterError(f"{name}: no such folder: {parent}")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise ParameterError(f"{name}: the folder {parent} is not writable")
+    if folder:
+        if target.exists() and not target.is_dir():
+            raise ParameterError(f"{name}: {target} exists and is not a folder")
+    else:
+        if target.is_dir():
+            raise ParameterError(f"{name}: {target} is a folder; give a file name")
+        if target.exists() and not os.access(target, os.W_OK):
+            raise ParameterError(f"{name}: {target} is read-only; remove it or choose "
+                                 "another name")
+    return target
+
+
+@contextlib.contextmanager
+def atomic_file(path, mode: str = "w", **open_kw) -> Iterator:
+    """Open a temporary file beside ``path``; on success rename it to ``path``.
+
+    Yields an open file object (``mode`` ``"w"``, ``"wb"``, ...).  With ``mode=None`` it
+    yields the temporary :class:`~pathlib.Path` instead (for writers that open the file
+    themselves, e.g. ``savefig``; keep the suffix of ``path``).
+    """
+    target = Path(os.path.abspath(os.fspath(path)))
+    fd, tmp = tempfile.mkstemp(prefix=f".{target.stem}.", suffix=f".tmp{target.suffix}",
+                               dir=target.parent)
+    tmp = Path(tmp)
+    try:
+        os.chmod(tmp, 0o666 & ~_umask())
+        if mode is None:
+            os.close(fd)
+            yield tmp
+        else:
+            with os.fdopen(fd, mode, **open_kw) as fh:
+                yield fh
+        os.replace(tmp, target)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            if mode is None:
+                os.close(fd)
+        with contextlib.suppress(OSError):
+            tmp.unlink()
+        raise
+
+
+@contextlib.contextmanager
+def atomic_dir(path) -> Iterator[Path]:
+    """Build a folder under a temporary name beside ``path``; on success swap it in.
+
+    Yields the temporary folder to write into.  At the end an existing ``path`` is moved
+    aside, the new folder renamed into its place and the old one deleted: readers see
+    either the old folder or the new one, never a mixture, and two runs into the same
+    folder leave the whole result of the one that finished last.
+    """
+    target = Path(os.path.abspath(os.fspath(path)))
+    tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent))
+    try:
+        os.chmod(tmp, 0o777 & ~_umask())
+        yield tmp
+        old = None
+        if target.exists():
+            old = Path(tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".old",
+                                        dir=target.parent))
+            os.replace(target, old / "x")
+        os.replace(tmp, target)
+        if old is not None:
+            shutil.rmtree(old, ignore_errors=True)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
