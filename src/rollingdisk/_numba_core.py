@@ -63,6 +63,7 @@ _smooth_omega_dot = _compile("_smooth_omega_dot")
 _rough_rhs = _compile("_rough_rhs")
 _smooth_rhs = _compile("_smooth_rhs")
 _reduced_state = _compile("_reduced_state")
+_reduced_rhs = _compile("_reduced_rhs")
 _normal_force = _compile("_normal_force")  # eq. (11), for the lift-off guard
 
 # ------------------------------------------------------------------ DOP853 coefficients
@@ -88,7 +89,13 @@ RUNNING, COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED = 0, 1, 2, 3, 4, 5
 
 @numba.njit(cache=True)
 def _rhs(rough, h, y, out):
-    if rough:
+    """dy/dt into ``out``: full state of either ground (8 or 10 components) or the reduced
+    state ``(theta, omega1, omega2, omega3)`` (4 components)."""
+    if y.shape[0] == 4:
+        r4 = _reduced_rhs(rough, h, y)
+        for i in range(4):
+            out[i] = r4[i]
+    elif rough:
         r = _rough_rhs(h, y)
         for i in range(8):
             out[i] = r[i]
@@ -105,7 +112,7 @@ def _guards(rough, h, y, g):
     g[0] = F_z (lift-off when it reaches 0, eq. 11); g[1] = theta (for h > 0 the disk
     lands on its other rim edge when theta reaches 0); g[2] = pi/2 - |theta| (falls flat).
     """
-    theta = y[3] if rough else y[5]
+    theta = _reduced_state(rough, y)[0]
     g[0] = _normal_force(rough, h, y)
     g[1] = theta
     g[2] = 0.5 * np.pi - abs(theta)
@@ -507,7 +514,7 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atol, max_step, first_step
 
 # ------------------------------------------------------------------ stale-cache guard
 _DISPATCHERS = ("_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs",
-                "_smooth_rhs", "_reduced_state", "_rhs", "_normal_force", "_guards", "_step",
+                "_smooth_rhs", "_reduced_state", "_reduced_rhs", "_rhs", "_normal_force", "_guards", "_step",
                 "_dense_coefficients", "_dense_value", "_error_norm", "_rms", "initial_step",
                 "_fired", "_triggered", "_guard_value", "_locate", "integrate")
 
@@ -531,6 +538,12 @@ def rhs_matches_kernels() -> bool:
                     return False
                 if not np.isclose(_normal_force(rough, h, y), _eq._normal_force(rough, h, y),
                                   rtol=1e-12, atol=1e-12):
+                    return False
+                x = y[:4].copy()
+                out4 = np.empty(4)
+                _rhs(rough, h, x, out4)
+                if not np.allclose(out4, np.array(_eq._reduced_rhs(rough, h, x)), rtol=1e-12,
+                                   atol=1e-12):
                     return False
     return True
 

@@ -127,8 +127,25 @@ def _smooth_rhs(h, y):
     return (V_X, V_Y, zero, zero, w3 / c, w1, w2 - w3 * p, d1, d2, d3)
 
 
+def _reduced_rhs(rough, h, x):
+    """Right-hand side of the reduced system ``x = (theta, omega1, omega2, omega3)``:
+    ``d theta/dt = omega1`` (eq. 2) and eq. (38) on rough / (49) on smooth ground.
+
+    It is autonomous and closed on both grounds; ``X_C, Y_C, psi, phi`` (and nothing else)
+    follow from it by quadrature (eqs. 1, 2, 37)."""
+    theta, w1, w2, w3 = x[0], x[1], x[2], x[3]
+    if rough:
+        d1, d2, d3 = _rough_omega_dot(h, theta, w1, w2, w3)
+    else:
+        d1, d2, d3 = _smooth_omega_dot(h, theta, w1, w2, w3)
+    return w1, d1, d2, d3
+
+
 def _reduced_state(rough, y):
-    """``(theta, omega1, omega2, omega3)`` out of a state vector of either ground."""
+    """``(theta, omega1, omega2, omega3)`` out of a state vector of either ground, or of a
+    reduced state (4 components, returned as they are)."""
+    if y.shape[0] == 4:
+        return y[0], y[1], y[2], y[3]
     if rough:
         return y[3], y[5], y[6], y[7]
     return y[5], y[7], y[8], y[9]
