@@ -514,7 +514,8 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atol, max_step, first_step
 
 # ------------------------------------------------------------------ stale-cache guard
 _DISPATCHERS = ("_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs",
-                "_smooth_rhs", "_reduced_state", "_reduced_rhs", "_rhs", "_normal_force", "_guards", "_step",
+                "_smooth_rhs", "_reduced_state", "_reduced_rhs", "_rhs", "_normal_force",
+                "_guards", "_step",
                 "_dense_coefficients", "_dense_value", "_error_norm", "_rms", "initial_step",
                 "_fired", "_triggered", "_guard_value", "_locate", "integrate")
 
