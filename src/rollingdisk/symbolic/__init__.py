@@ -10,8 +10,9 @@ Outside the numeric core: nothing in the core imports this package.
   that turns a comparison into a status.
 - :mod:`.paper`: the printed equations of section 2, (37), (38), (49), compared with it.
 - :mod:`.printed`: the printed statements of sections 3-4 (equations and quoted numbers).
-- :mod:`.sections34`: sections 3-4 (steady motions, stability) re-derived from it, one
-  registered check per printed statement of :mod:`.printed`.
+- :mod:`.sections34`: sections 3-4 (steady motions, stability) re-derived from it, the
+  registry of checks and the generated part of docs/errata.md; :mod:`.checks3` and
+  :mod:`.checks4` hold the checks, one registered function per statement of :mod:`.printed`.
 
 This module owns :func:`check_equations` and :func:`format_table` (what ``rollingdisk derive``
 prints).

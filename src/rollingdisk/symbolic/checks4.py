@@ -51,14 +51,20 @@ def _eq40(pr):
                    "numerically agrees with the Jacobian of the library's equations to ~1e-12")
 
 
+def _bound_holds(expr, var, f) -> bool:
+    """``var^2 > f[0]`` is where ``expr`` turns positive, and ``f[0]`` at h = 0 is ``f[1]``."""
+    return changes_sign_at(expr, var, f[0]) and sp.simplify(f[0].subs(h, 0) - f[1]) == 0
+
+
+def _bound_evidence(pr, extra: str) -> str:
+    return (f"sympy: the derived varpi^2 {extra}vanishes at the printed bound and is negative "
+            f"below / positive above it; the bound at h = 0 is {pr.form[0].subs(h, 0)} (quoted "
+            f"{pr.form[1]})")
+
+
 def _threshold(pr, expr, var, extra=""):
     """Row of a printed stability bound ``var^2 > form[0]`` with the value quoted at h = 0."""
-    def ok(f):
-        return changes_sign_at(expr, var, f[0]) and sp.simplify(f[0].subs(h, 0) - f[1]) == 0
-
-    return verdict(pr, ok, f"sympy: the derived varpi^2 {extra}vanishes at the printed bound "
-                   "and is negative below / positive above it; the bound at h = 0 is "
-                   f"{pr.form[0].subs(h, 0)} (quoted {pr.form[1]})")
+    return verdict(pr, lambda f: _bound_holds(expr, var, f), _bound_evidence(pr, extra))
 
 
 @check("(42)")
@@ -69,12 +75,16 @@ def _eq42(pr):
 
 @check("(43)")
 def _eq43(pr):
-    row = _threshold(pr, derived("rough")["varpi2_circle"].subs(p, ht), w3, "at tan th0 = h ")
-    x = math.sqrt(float(pr.form[0].subs(h, sp.sqrt(3) / 2)))
-    ok = row.status == "confirmed" and abs(x - pr.form[2]) <= 5e-4
-    return verdict(pr, lambda f: ok, row.evidence + "; an odd but correct form of "
+    expr = derived("rough")["varpi2_circle"].subs(p, ht)
+
+    def at_se_spin(f):  # the bound on |omega30| at h = sqrt(3)/2 (spin in place)
+        return math.sqrt(float(f[0].subs(h, sp.sqrt(3) / 2)))
+
+    return verdict(pr, lambda f: _bound_holds(expr, w3, f) and abs(at_se_spin(f) - f[2]) <= 5e-4,
+                   _bound_evidence(pr, "at tan th0 = h ") + "; an odd but correct form of "
                    "12/((15+16h^2) sqrt(1+h^2)); at h = sqrt(3)/2 it gives |omega30| > "
-                   f"sqrt(8 sqrt7/63) = {x:.4f} (quoted {pr.form[2]:.3f})")
+                   f"sqrt(8 sqrt7/63) = {at_se_spin(pr.form):.4f} (quoted {pr.form[2]:.3f}, "
+                   "tolerance 5e-4)")
 
 
 @check("(44)")
@@ -114,6 +124,7 @@ def _printed_P0_boundary() -> float:
 @check("(46)")
 def _eq46(pr):
     import random
+    from fractions import Fraction
 
     from .identity import point
     from .printed import PP0, PP1, PP2
@@ -123,16 +134,16 @@ def _eq46(pr):
              for i in range(6)]
     # the rule against the truth for quadratics a x^2 + b x + c with a, c > 0, b of any sign
     rng = random.Random(46)
-    cases = [tuple(sp.Rational(rng.randint(1, 99), rng.randint(1, 9)) * sg for sg in (1, s_, 1))
+    cases = [tuple(Fraction(rng.randint(1, 99), rng.randint(1, 9)) * sg for sg in (1, s_, 1))
              for _ in range(200) for s_ in (1, -1)]
 
     def positive_for_all_x(c0, b, a):  # min over x > 0 of a x^2 + b x + c0
         return (c0 if b >= 0 else c0 - b * b / (4 * a)) > 0
 
     def ok(rule):
+        f = sp.lambdify((PP0, PP1, PP2), rule)
         return (all(a >= 0 and b > 0 and d > 0 for a, b, d in signs)
-                and all(bool(rule.subs({PP0: c0, PP1: b, PP2: a})) == positive_for_all_x(c0, b, a)
-                        for c0, b, a in cases))
+                and all(bool(f(c0, b, a)) == positive_for_all_x(c0, b, a) for c0, b, a in cases))
 
     return verdict(pr, ok, "with the corrected P0: P0 >= 0, P2 > 0 and the denominator of (45) > 0 "
                    "(at random points), so varpi^2 > 0 for all omega30 iff the quadratic in "
@@ -343,9 +354,10 @@ def _before_conclusion_half(pr):
     _, hi = critical_omega30_sq(0.5, "smooth", 0.0)
     none_above = all(math.isnan(float(critical_omega30_sq(x, "smooth", 0.0)[1]))
                      for x in (0.51, 1.0, 5.0))
-    row = _quoted(pr, math.sqrt(float(hi)), 1e-9, "double root at h = 1/2, theta0 -> 0+ (no "
-                  f"real root for h = 0.51, 1, 5: {none_above})")
-    return row if none_above else verdict(pr, lambda f: False, row.evidence)
+    value = math.sqrt(float(hi))
+    return verdict(pr, lambda f: none_above and abs(value - f) <= 1e-9,
+                   "double root at h = 1/2, theta0 -> 0+ (no real root for h = 0.51, 1, 5: "
+                   f"{none_above}): library {value:.6g}, paper {pr.form:g}")
 
 
 @check("text before Conclusion / Conclusion")

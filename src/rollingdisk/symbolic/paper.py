@@ -43,8 +43,7 @@ __all__ = ["PRINTED_38", "PRINTED_49",
            "EquationCheck", "checks_sections_1_2", "same"]
 
 
-# The printed reduced equations, in the symbols of :mod:`.derivation`; ``sections34`` starts
-# from them too (``source="printed"``), so they are typed in here only.
+# The printed reduced equations, in the symbols of :mod:`.derivation` (typed in here only).
 _s, _c, _p = sp.sin(theta), sp.cos(theta), sp.tan(theta)
 _y_P, _z_P = _s - ht * _c, -(_c + ht * _s)  # printed (4)
 _k1, _k2 = sp.Rational(1, 4) + h**2 / 3, sp.Rational(1, 2)  # printed (10)
