@@ -230,8 +230,12 @@ def _after30_limit(pr):
 
 @check("text after (30) [spin]")
 def _after30_spin(pr):
-    h0 = float(sp.solve(PRINTED["(30)"].form.subs(h, sp.Symbol("x", positive=True)))[0])
-    return _quoted(pr, _deg(math.atan(h0)), 5e-4, "arctan of the positive zero of (30) [deg]")
+    x = sp.Symbol("x", positive=True)
+    zeros = sp.solve(sp.simplify(_se_radius().subs(h, x)), x)  # the derived (30)
+    if len(zeros) != 1:
+        raise RuntimeError(f"expected one positive zero of the derived (30), got {zeros}")
+    return _quoted(pr, _deg(math.atan(float(zeros[0]))), 5e-4,
+                   "arctan of the positive zero of the derived (30) [deg]")
 
 
 @check("(31) first form")
@@ -307,11 +311,14 @@ def _after32_great_h(pr):
 
     from ..steady import r_C_star
 
-    ratio = float(np.min(r_C_star(1e6, _theta_grid()))) / float(pr.form.subs(h, 1e6))
-    return verdict(pr, lambda f: abs(float(np.min(r_C_star(1e6, _theta_grid())))
-                                     / float(f.subs(h, 1e6)) - 1) <= 1e-3,
-                   f"ratio min r_C* / (-h/3) at h = 1e6: {ratio:.6g} (0.867 at h = 100; slow "
-                   "approach)")
+    low = float(np.min(r_C_star(1e6, _theta_grid())))
+
+    def ratio(f):  # grid minimum of r_C* over the printed limit, at h = 1e6
+        return low / float(f.subs(h, 1e6))
+
+    return verdict(pr, lambda f: abs(ratio(f) - 1) <= 1e-3,
+                   f"ratio min r_C* / (-h/3) at h = 1e6: {ratio(pr.form):.6g} (tolerance 1e-3; "
+                   "0.867 at h = 100, a slow approach)")
 
 
 @check("(33)")
