@@ -4,9 +4,18 @@ Outside the numeric core: nothing in the core imports this package.
 
 - :mod:`.derivation`: Newton-Euler from first principles (frames, inertia, contact point,
   balances, reduced systems on rough and smooth ground).
+- :mod:`.identity`: the one identity test (random rational points, 50 digits) every
+  comparison uses.
+- :mod:`.rows`: the one row type of the errata table, :class:`EquationCheck`, and the rule
+  that turns a comparison into a status.
 - :mod:`.paper`: the printed equations of section 2, (37), (38), (49), compared with it.
-- :mod:`.sections34`: sections 3-4 (steady motions, stability) re-derived from it, every
-  printed equation (15)-(59) and quoted number compared.
+- :mod:`.printed`: the printed statements of sections 3-4 (equations and quoted numbers).
+- :mod:`.sections34`: sections 3-4 (steady motions, stability) re-derived from it, the
+  registry of checks and the generated part of docs/errata.md; :mod:`.checks3` and
+  :mod:`.checks4` hold the checks, one registered function per statement of :mod:`.printed`.
+
+This module owns :func:`check_equations` and :func:`format_table` (what ``rollingdisk derive``
+prints).
 """
 
 from __future__ import annotations
@@ -14,7 +23,8 @@ from __future__ import annotations
 import sys
 
 from .derivation import Derivation, derive, lambdified
-from .paper import EquationCheck, checks_sections_1_2
+from .paper import checks_sections_1_2
+from .rows import EquationCheck
 
 __all__ = ["Derivation", "EquationCheck", "check_equations", "derive", "format_table",
            "lambdified"]
@@ -44,10 +54,7 @@ def check_equations(progress: bool = False, sections: str = "all") -> list[Equat
         if progress:
             print("checking sections 3-4: eqs. (15)-(59) and the quoted numbers ...",
                   file=sys.stderr)
-        rows += [EquationCheck(r["equation"], "", r["status"], r["evidence"],
-                               r["printed"] if r["status"] != "confirmed" else "",
-                               r["correct"] if r["status"] != "confirmed" else "")
-                 for r in checks_sections_3_4()]
+        rows += checks_sections_3_4()
     return rows
 
 
@@ -63,7 +70,9 @@ def format_table(rows: list[EquationCheck]) -> str:
         if r.status != "confirmed":
             lines.append(f"{'':<{width + 12}}printed: {r.printed}")
             lines.append(f"{'':<{width + 12}}correct: {r.correct}")
-    n_bad = sum(r.status != "confirmed" for r in rows)
-    lines.append(f"{len(rows)} equations checked: {len(rows) - n_bad} confirmed, "
-                 f"{n_bad} misprinted (details and evidence: docs/errata.md)")
+    n_bad = sum(r.status == "misprint" for r in rows)
+    n_open = sum(r.status == "unresolved" for r in rows)
+    lines.append(f"{len(rows)} equations checked: {len(rows) - n_bad - n_open} confirmed, "
+                 f"{n_bad} misprinted" + (f", {n_open} UNRESOLVED" if n_open else "")
+                 + " (details and evidence: docs/errata.md)")
     return "\n".join(lines)

@@ -46,6 +46,12 @@ def _Ry(a):
     return sp.Matrix([[sp.cos(a), 0, sp.sin(a)], [0, 1, 0], [-sp.sin(a), 0, sp.cos(a)]])
 
 
+def _require(ok: bool, what: str) -> None:
+    """A step of the derivation that must hold (not an ``assert``: it stays under ``-O``)."""
+    if not ok:
+        raise RuntimeError(f"symbolic derivation: expected {what}, sympy says otherwise")
+
+
 def _vee(S):
     """The vector of a skew-symmetric matrix."""
     return sp.Matrix([S[2, 1], S[0, 2], S[1, 0]])
@@ -124,14 +130,16 @@ def derive() -> Derivation:
     rim = sp.Matrix([sp.cos(a_), s_ * h, sp.sin(a_)])  # in xi eta zeta
     height = (_Rx(theta) * rim)[2]
     # d height / da = cos(a) cos(theta) = 0 -> a = -pi/2 is the minimum for |theta| < pi/2
-    assert sp.simplify(height.diff(a_).subs(a_, -sp.pi / 2)) == 0
-    assert sp.simplify(height.diff(a_, 2).subs(a_, -sp.pi / 2) - sp.cos(theta)) == 0
+    _require(sp.simplify(height.diff(a_).subs(a_, -sp.pi / 2)) == 0
+             and sp.simplify(height.diff(a_, 2).subs(a_, -sp.pi / 2) - sp.cos(theta)) == 0,
+             "a = -pi/2 is the lowest point of a rim circle")
     # the two edges differ in height by 2 h sin(theta): the lower is s = -sgn(theta)
-    assert sp.simplify(height.subs(s_, 1) - height.subs(s_, -1) - 2 * h * sp.sin(theta)) == 0
+    _require(sp.simplify(height.subs(s_, 1) - height.subs(s_, -1) - 2 * h * sp.sin(theta)) == 0,
+             "the two rim circles differ in height by 2 h sin(theta)")
     rP = sp.Matrix([0, -ht, -1])  # r_CP in xi eta zeta: a = -pi/2, s h = -h sgn(theta)
     rP_xyz = _Rx(theta) * rP
     y_P, z_P = sp.simplify(rP_xyz[1]), sp.simplify(rP_xyz[2])
-    assert sp.simplify(rP_xyz[0]) == 0
+    _require(sp.simplify(rP_xyz[0]) == 0, "the contact point lies in the plane x = 0")
     P_inertial = _Rz(psi) * rP_xyz
     contact_inertial = (sp.simplify(P_inertial[0]), sp.simplify(P_inertial[1]))
 

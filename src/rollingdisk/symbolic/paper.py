@@ -1,13 +1,14 @@
 """The paper's printed equations of section 2, (37), (38) and (49), checked against the derivation.
 
-This is the one place where printed formulas are typed in, and only to be compared with
-:func:`rollingdisk.symbolic.derivation.derive`; the library never uses them.
+Owns these printed formulas (typed in here only, and only to be compared with
+:func:`rollingdisk.symbolic.derivation.derive`; the library never uses them) and their rows,
+:func:`checks_sections_1_2`.  The comparison is :func:`rollingdisk.symbolic.identity.same`
+(re-exported here); the printed statements of sections 3-4 are in
+:mod:`rollingdisk.symbolic.printed`.
 """
 
 from __future__ import annotations
 
-import random
-from dataclasses import asdict, dataclass
 from functools import lru_cache
 
 import sympy as sp
@@ -35,13 +36,14 @@ from .derivation import (
     v_Cy,
     v_Cz,
 )
+from .identity import same
+from .rows import EquationCheck
 
 __all__ = ["PRINTED_38", "PRINTED_49",
            "EquationCheck", "checks_sections_1_2", "same"]
 
 
-# The printed reduced equations, in the symbols of :mod:`.derivation`; ``sections34`` starts
-# from them too (``source="printed"``), so they are typed in here only.
+# The printed reduced equations, in the symbols of :mod:`.derivation` (typed in here only).
 _s, _c, _p = sp.sin(theta), sp.cos(theta), sp.tan(theta)
 _y_P, _z_P = _s - ht * _c, -(_c + ht * _s)  # printed (4)
 _k1, _k2 = sp.Rational(1, 4) + h**2 / 3, sp.Rational(1, 2)  # printed (10)
@@ -61,47 +63,6 @@ PRINTED_49 = sp.Matrix([
     0,
     (-_k2 * omega2 + _k1 * omega3 * _p) * omega1 / _k1,
 ])
-
-
-@dataclass(frozen=True)
-class EquationCheck:
-    """One row of the errata table: a printed equation and what the derivation says of it."""
-
-    equation: str  # "(38)"
-    quantity: str  # what it gives
-    status: str  # "confirmed" or "misprint"
-    evidence: str
-    printed: str = ""
-    correct: str = ""
-
-    def as_dict(self) -> dict:
-        return asdict(self)
-
-
-def same(derived, printed, *, n_random: int = 50, seed: int = 1) -> tuple[bool, str]:
-    """Are two expressions equal for ``h~ = +h`` and ``h~ = -h``?  Returns (equal, how).
-
-    First symbolically (difference simplifies to 0), then, if sympy cannot decide, at
-    ``n_random`` random points (relative difference below 1e-12).
-    """
-    if isinstance(derived, sp.MatrixBase):
-        diff = derived - sp.Matrix(printed)
-    else:
-        diff = sp.Matrix([sp.sympify(derived) - sp.sympify(printed)])
-    elements = [e for e in diff if e != 0]
-    cases = [sp.simplify(e.subs(ht, s * h)) for e in elements for s in (1, -1)]
-    if all(x == 0 for x in cases):
-        return True, "difference simplifies to 0 for h~ = +h and h~ = -h"
-    rng = random.Random(seed)
-    syms = sorted(set().union(*(x.free_symbols for x in cases)), key=str)
-    worst = 0.0
-    for _ in range(n_random):
-        vals = {s: rng.uniform(0.05, 1.4) if s in (theta, h) else rng.uniform(-3, 3) for s in syms}
-        for x in cases:
-            worst = max(worst, abs(complex(x.subs(vals).evalf())))
-    if worst < 1e-12:
-        return True, f"numerically equal at {n_random} random points (max diff {worst:.1e})"
-    return False, f"differs: max difference {worst:.3g} at {n_random} random points"
 
 
 def _row(eq, quantity, derived, printed, correct_text=""):
