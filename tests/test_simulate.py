@@ -192,8 +192,8 @@ def test_default_tolerances_keep_energy_drift_below_1e9_over_1000(motion):
 @pytest.mark.parametrize("h", [0.0, 0.25])
 def test_compiled_integrator_takes_the_same_steps_as_scipy(ground, y0, h):
     disk = Disk(h=h)
-    a = simulate(disk, ground, y0, (0, 20), method="dop853", rtol=1e-10, atol=1e-10)
-    b = simulate(disk, ground, y0, (0, 20), method="scipy", rtol=1e-10, atol=1e-10)
+    a = simulate(disk, ground, (0, 20), y0, method="dop853", rtol=1e-10, atol=1e-10)
+    b = simulate(disk, ground, (0, 20), y0, method="scipy", rtol=1e-10, atol=1e-10)
     assert a.status == b.status == "completed"
     # same method, same step control: the same steps up to round-off in the error
     # estimate (a difference of nearly equal sums, so ~1e-7 relative in the step sizes)
@@ -226,14 +226,14 @@ def test_t_eval_output_matches_the_step_output():
     disk = Disk(h=0.2)
     y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
     te = np.linspace(0, 10, 37)
-    a = simulate(disk, "rough", y0, (0, 10), t_eval=te)
-    b = simulate(disk, "rough", y0, (0, 10), method="scipy", t_eval=te)
+    a = simulate(disk, "rough", (0, 10), y0, t_eval=te)
+    b = simulate(disk, "rough", (0, 10), y0, method="scipy", t_eval=te)
     assert a.status == b.status == "completed"
     np.testing.assert_array_equal(a.t, te)
     np.testing.assert_allclose(a.y, b.y, rtol=1e-9, atol=1e-9)
     # a run that stops exactly at each requested time agrees too
     for k in (5, 20, 36):
-        c = simulate(disk, "rough", y0, (0, te[k]))
+        c = simulate(disk, "rough", (0, te[k]), y0)
         np.testing.assert_allclose(a.y[:, k], c.y[:, -1], rtol=1e-9, atol=1e-9)
 
 
@@ -241,15 +241,15 @@ def test_progress_chunks_give_the_same_motion():
     disk = Disk(h=0.2)
     y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
     seen = []
-    a = simulate(disk, "rough", y0, (0, 50), progress=seen.append)
-    b = simulate(disk, "rough", y0, (0, 50))
+    a = simulate(disk, "rough", (0, 50), y0, progress=seen.append)
+    b = simulate(disk, "rough", (0, 50), y0)
     assert a.status == b.status == "completed"
     assert seen[-1] == pytest.approx(1.0) and 10 < len(seen) <= 100
     assert np.all(np.diff(seen) > 0)
     assert np.all(np.diff(a.t) > 0)
     np.testing.assert_allclose(a.y[:, -1], b.y[:, -1], rtol=1e-8, atol=1e-8)
     te = np.linspace(0, 50, 11)
-    c = simulate(disk, "rough", y0, (0, 50), t_eval=te, progress=lambda f: None)
+    c = simulate(disk, "rough", (0, 50), y0, t_eval=te, progress=lambda f: None)
     np.testing.assert_array_equal(c.t, te)
     np.testing.assert_allclose(c.y[:, -1], b.y[:, -1], rtol=1e-8, atol=1e-8)
 
@@ -260,8 +260,8 @@ def test_progress_takes_exactly_the_steps_of_a_plain_run(t_eval):
     # the tail of each chunk (1583 instead of 1302 steps here)
     disk = Disk(h=0.2)
     y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
-    a = simulate(disk, "rough", y0, (0, 100), t_eval=t_eval)
-    b = simulate(disk, "rough", y0, (0, 100), t_eval=t_eval, progress=lambda f: None)
+    a = simulate(disk, "rough", (0, 100), y0, t_eval=t_eval)
+    b = simulate(disk, "rough", (0, 100), y0, t_eval=t_eval, progress=lambda f: None)
     assert a.status == b.status == "completed"
     assert a.n_steps == b.n_steps
     assert b.n_rhs - a.n_rhs <= 100  # f once more at each pause, nothing else
@@ -277,14 +277,14 @@ def test_t_eval_output_is_the_dense_output_of_scipys_dop853():
     disk = Disk(h=0.2)
     y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
     te = np.linspace(0, 100, 2001)
-    a = simulate(disk, "rough", y0, (0, 100), t_eval=te)
+    a = simulate(disk, "rough", (0, 100), y0, t_eval=te)
     ref = solve_ivp(equations_of_motion(disk, "rough"), (0, 100), y0, method="DOP853",
                     rtol=DEFAULT_RTOL, atol=DEFAULT_ATOL, t_eval=te)
     np.testing.assert_array_equal(a.t, te)
     scale = np.max(np.abs(ref.y), axis=1, keepdims=True)
     assert np.max(np.abs(a.y - ref.y) / scale) < 1e-11
     # dense output: 3 evaluations per step, not a 12-stage step per requested time
-    b = simulate(disk, "rough", y0, (0, 100))
+    b = simulate(disk, "rough", (0, 100), y0)
     assert a.n_steps == b.n_steps
     assert a.n_rhs <= b.n_rhs + 3 * b.n_steps < b.n_rhs + 12 * te.size
 
@@ -292,7 +292,7 @@ def test_t_eval_output_is_the_dense_output_of_scipys_dop853():
 def test_thin_disk_passes_through_theta_zero():
     # h = 0: theta = 0 is an ordinary state (upright), no edge contact
     y0 = [0, 0, 0, 0.05, 0, -0.5, 1.5, 0]  # rolling, tipping through upright
-    tr = simulate(Disk(h=0.0), "rough", y0, (0, 50))
+    tr = simulate(Disk(h=0.0), "rough", (0, 50), y0)
     assert tr.status == "completed"
     assert tr.theta.min() < -0.04 and tr.theta.max() > 0.04
     assert energy_drift(tr) < 1e-10
@@ -316,8 +316,8 @@ GUARD_CASES = [
 @pytest.mark.parametrize("status,h,ground,y0", GUARD_CASES)
 def test_guard_events_stop_the_run(status, h, ground, y0):
     disk = Disk(h=h)
-    a = simulate(disk, ground, y0, (0, 20))
-    b = simulate(disk, ground, y0, (0, 20), method="scipy")
+    a = simulate(disk, ground, (0, 20), y0)
+    b = simulate(disk, ground, (0, 20), y0, method="scipy")
     assert a.status == b.status == status
     assert a.t_event == pytest.approx(b.t_event, rel=1e-9, abs=1e-9)
     assert a.t[-1] == a.t_event < 20
@@ -342,12 +342,12 @@ def test_start_with_negative_normal_force_is_immediate_lift_off():
     y0 = [0, 0, 0, 0.1, 0, 2.0, 0, 0]  # fast tipping near upright: F_z < 0 already
     assert contact_force(Disk(h=0.0), "rough", y0)[2] < 0
     for method in ("dop853", "scipy"):
-        tr = simulate(Disk(h=0.0), "rough", y0, (0, 1), method=method)
+        tr = simulate(Disk(h=0.0), "rough", (0, 1), y0, method=method)
         assert tr.status == "lift-off" and tr.t_event == 0.0 and tr.t.size == 1
 
 
 def test_guards_off_integrates_through():
-    tr = simulate(Disk(h=0.2), "rough", [0, 0, 0, 0.1, 0, -0.5, 1.0, 0], (0, 0.3),
+    tr = simulate(Disk(h=0.2), "rough", (0, 0.3), [0, 0, 0, 0.1, 0, -0.5, 1.0, 0],
                   guards=False)
     assert tr.status == "completed" and tr.theta[-1] < 0
 
@@ -359,13 +359,13 @@ def test_user_events_run_through_scipy():
     half.terminal = True
     half.direction = 1
     y0 = [0, 0, 0, 0.3, 0, 0.1, 2.0, 0.5]
-    tr = simulate(Disk(h=0.1), "rough", y0, (0, 20), events=half)
+    tr = simulate(Disk(h=0.1), "rough", (0, 20), y0, events=half)
     assert tr.method == "scipy" and tr.status == "completed"
     assert tr.theta[-1] == pytest.approx(0.35, abs=1e-10)
     assert "user event 0" in tr.message
     assert len(tr.t_events) == 1 and tr.t_events[0][0] == pytest.approx(tr.t[-1])
     with pytest.raises(ValueError, match="events"):
-        simulate(Disk(h=0.1), "rough", y0, (0, 20), events=half, method="dop853")
+        simulate(Disk(h=0.1), "rough", (0, 20), y0, events=half, method="dop853")
 
 
 def _time_event(at, terminal):
@@ -381,7 +381,7 @@ def test_only_a_terminal_user_event_stops_the_run(t_eval):
     # a non-terminal event was once reported as the one that stopped the run, and its time
     # appended to t after the end
     y0 = [0, 0, 0, 0.3, 0, 0.1, 2.0, 0.5]
-    tr = simulate(Disk(h=0.1), "rough", y0, (0, 20), t_eval=t_eval,
+    tr = simulate(Disk(h=0.1), "rough", (0, 20), y0, t_eval=t_eval,
                   events=[_time_event(1.0, False), _time_event(3.0, True)])
     assert tr.status == "completed"
     assert np.all(np.diff(tr.t) > 0)
@@ -398,7 +398,7 @@ def test_a_user_event_with_a_terminal_count_stops_at_that_count():
 
     wave.terminal = 2  # solve_ivp: stop at the 2nd occurrence
     y0 = [0, 0, 0, 0.3, 0, 0.1, 2.0, 0.5]
-    tr = simulate(Disk(h=0.1), "rough", y0, (0, 20), events=[_time_event(1.0, False), wave])
+    tr = simulate(Disk(h=0.1), "rough", (0, 20), y0, events=[_time_event(1.0, False), wave])
     assert tr.t[-1] == pytest.approx(1.5, abs=1e-10)
     assert "user event 1 at t = 1.5" in tr.message
     np.testing.assert_allclose(tr.t_events[1], [0.5, 1.5], atol=1e-10)
@@ -414,14 +414,14 @@ def test_fit_circle_is_exact_on_a_circle():
 
 
 def test_oscillation_frequency_none_without_oscillation():
-    tr = simulate(Disk(h=0.1), "rough", [0, 0, 0, 0.5, 0, 0, 0, 0], (0, 0.5))
+    tr = simulate(Disk(h=0.1), "rough", (0, 0.5), [0, 0, 0, 0.5, 0, 0, 0, 0])
     assert oscillation_frequency(tr) is None
 
 
 # ---------------------------------------------------------------------------- the result
 def test_trajectory_is_frozen_and_named():
     y0 = [0, 0, 0, 0.3, 0, 0.1, 2.0, 0.5]
-    tr = simulate(Disk(h=0.1), "rough", y0, (0, 1))
+    tr = simulate(Disk(h=0.1), "rough", (0, 1), y0)
     assert isinstance(tr, Trajectory)
     with pytest.raises(AttributeError):
         tr.status = "x"
@@ -449,14 +449,14 @@ def test_simulate_steady_perturbs_theta_only():
 
 
 def test_simulate_steady_keeps_the_disk_of_the_motion():
-    from types import SimpleNamespace
-
-    m = circle("rough", 0.1, 0.3, 3.0)
-    disk = Disk(h=0.1, radius=0.05, mass=0.2)  # a physical disk: SI conversions need it
-    wrapped = SimpleNamespace(ground=m.ground, h=m.h, theta0=m.theta0, disk=disk,
-                              initial_state=m.initial_state)
-    tr = simulate_steady(wrapped, 1.0, perturb=1e-3)
-    assert tr.disk is disk
+    # real objects all the way: a physical disk (radius, mass) through steady_motion and
+    # straight_line into the trajectory, whose SI conversions need them
+    disk = Disk(h=0.1, radius=0.05, mass=0.2)
+    for m in (steady_motion(disk, "rough", 0.3, Omega0=3.0),
+              straight_line(disk, "smooth", 1.0)):
+        assert m.disk is disk and m.h == 0.1
+        tr = simulate_steady(m, 1.0, perturb=1e-3)
+        assert tr.disk is disk and tr.disk.radius == 0.05 and tr.disk.mass == 0.2
 
 
 @pytest.mark.parametrize("theta0,perturb", [(0.3, -0.3), (0.3, 1.3), (-1.2, -0.4)])
@@ -494,12 +494,12 @@ def test_invalid_input_raises_valueerror_naming_the_parameter(kwargs, match):
                 t_span=(0, 1))
     args.update(kwargs)
     with pytest.raises(ValueError, match=match):
-        simulate(args.pop("disk"), args.pop("ground"), args.pop("y0"), args.pop("t_span"),
+        simulate(args.pop("disk"), args.pop("ground"), args.pop("t_span"), args.pop("y0"),
                  **args)
 
 
 def test_simulate_steady_rejects_non_motions():
-    with pytest.raises(ValueError, match="SteadyMotion"):
+    with pytest.raises(TypeError, match="SteadyMotion"):
         simulate_steady(object(), 1.0)
     with pytest.raises(ValueError, match="t_end"):
         simulate_steady(circle("rough", 0.1, 0.3, 3.0), -1.0)
@@ -536,7 +536,7 @@ def test_import_is_light_and_the_core_needs_no_sympy_or_matplotlib():
             "import rollingdisk\n"
             "assert 'numba' not in sys.modules, 'import rollingdisk must not load numba'\n"
             "tr = rollingdisk.simulate(rollingdisk.Disk(h=0.1), 'rough',"
-            " [0, 0, 0, 0.3, 0, 0, 2.0, 0.5], (0, 1))\n"
+            " (0, 1), [0, 0, 0, 0.3, 0, 0, 2.0, 0.5])\n"
             "assert tr.status == 'completed' and 'numba' in sys.modules\n")
     import os
 
@@ -552,8 +552,8 @@ def test_import_is_light_and_the_core_needs_no_sympy_or_matplotlib():
                                     np.linspace(0, 0.15, 4)])
 def test_event_output_is_the_same_with_and_without_progress_chunks(t_eval):
     y0 = [0, 0, 0, 0.1, 0, -0.5, 1.0, 0]  # lands on its other edge at t ~ 0.2
-    a = simulate(Disk(h=0.2), "rough", y0, (0, 20), t_eval=t_eval)
-    b = simulate(Disk(h=0.2), "rough", y0, (0, 20), t_eval=t_eval, progress=lambda f: None)
+    a = simulate(Disk(h=0.2), "rough", (0, 20), y0, t_eval=t_eval)
+    b = simulate(Disk(h=0.2), "rough", (0, 20), y0, t_eval=t_eval, progress=lambda f: None)
     assert a.status == b.status == "edge-contact"
     assert a.t_event == pytest.approx(b.t_event, abs=1e-12)
     if t_eval is not None:
