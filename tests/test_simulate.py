@@ -33,6 +33,7 @@ from rollingdisk import (
     oscillation_frequency,
     simulate,
     simulate_steady,
+    stability,
 )
 from rollingdisk.equations import _rough_rhs, _smooth_rhs, contact_force
 from rollingdisk.steady import steady_motion, straight_line
@@ -579,7 +580,6 @@ STEADY_ROWS = [
 @pytest.mark.parametrize("row", STEADY_ROWS, ids=str)
 def test_simulation_confirms_the_stability_module(row):
     """Closed-form varpi^2 of rollingdisk.stability vs the simulated motion (both ways)."""
-    from rollingdisk import stability
     from rollingdisk.steady import steady_motion, straight_line
 
     ground, h, theta0, kind, value = row
@@ -608,3 +608,100 @@ def test_simulation_confirms_the_stability_module(row):
     if kind != "omega0":
         assert fit_circle(tr0.X_P, tr0.Y_P)[2] == pytest.approx(abs(m.r_P), rel=1e-8,
                                                                  abs=1e-10)
+
+
+# ---------------------------------------------------------------------------- issue 8
+_LIFT_IN_STEP = [0, 0, 0, -0.7679, 0, -0.8403, -1.2908, 1.1468]  # h = 1
+
+
+@pytest.mark.parametrize("method", ["dop853", "scipy"])
+def test_every_option_means_the_same_on_both_paths(method):
+    y0 = [0, 0, 0, 0.3, 0, 0, 2.0, 0.5]
+    seen = []
+    tr = simulate(Disk(h=0.1), "rough", (0, 10), y0, method=method, max_steps=3,
+                  progress=seen.append)
+    assert tr.status == "step-budget" and tr.n_steps == 3 and not tr.success
+    assert seen and seen[-1] < 1
+    seen = []
+    tr = simulate(Disk(h=0.1), "rough", (0, 10), y0, method=method, progress=seen.append,
+                  dense_output=True)
+    assert tr.status == "completed" and seen[-1] == 1.0 and np.all(np.diff(seen) >= 0)
+    # dense output interpolates the stored steps exactly at their ends
+    assert np.allclose(tr.sol(tr.t[5]), tr.y[:, 5], rtol=0, atol=1e-12)
+    chunks = []
+    streamed = simulate(Disk(h=0.1), "rough", (0, 10), y0, method=method,
+                        sink=lambda t, y: chunks.append((t, y)))
+    assert np.array_equal(np.concatenate([c[0] for c in chunks]), tr.t)
+    assert streamed.t.tolist() == [tr.t[0], tr.t[-1]]
+
+
+@pytest.mark.parametrize("method", ["dop853", "scipy"])
+def test_lift_off_inside_one_step_is_found_at_loose_tolerance(method):
+    # F_z dips to about -0.008 inside one step near t = 0.0106 (found by a robustness
+    # sweep); guards sampled only at step ends missed it and ran on to t = 2.376
+    tr = simulate(Disk(h=1.0), "rough", (0, 30), _LIFT_IN_STEP, method=method, rtol=1e-6,
+                  atol=1e-8)
+    assert tr.status == "lift-off" and tr.t_event < 0.011
+    # the same event as at tight tolerance
+    ref = simulate(Disk(h=1.0), "rough", (0, 30), _LIFT_IN_STEP, method=method)
+    assert ref.status == "lift-off" and tr.t_event == pytest.approx(ref.t_event, abs=1e-6)
+
+
+@pytest.mark.parametrize("method", ["dop853", "scipy"])
+def test_edge_contact_is_not_reported_as_lift_off(method):
+    # theta reaches 0, where h~ = h sgn(theta) makes F_z jump below 0: an edge contact
+    tr = simulate(Disk(h=3.0), "rough", (0, 20), [0, 0, 0, 0.1, 0, -0.2, -2, -0.3],
+                  method=method)
+    assert tr.status == "edge-contact" and tr.t_event == pytest.approx(0.4241435, abs=1e-6)
+    assert tr.F_z[-1] > 0 and tr.theta[-1] > 0
+
+
+@pytest.mark.parametrize("method", ["dop853", "scipy"])
+def test_lift_off_at_the_start_with_t_eval_gives_one_point(method):
+    tr = simulate(Disk(h=0.1), "rough", (0, 1), [0, 0, 0, 0.3, 0, 10.0, 0, 0], method=method,
+                  t_eval=[0.0, 0.5])
+    assert tr.status == "lift-off" and tr.t.tolist() == [0.0]
+
+
+@pytest.mark.parametrize("kwargs,match", [
+    (dict(y0=[0, 0, 0, 0.3, 0, 0, 1e300, 0]), "too large"),
+    (dict(y0=[0, 0, 0, 0.3, 0, math.nan, 1, 0]), "finite"),
+    (dict(t_span=(0, 1e300)), "t_span"),
+    (dict(rtol=2.0), "rtol"),
+    (dict(rtol=1e-17), "rtol"),
+])
+def test_absurd_inputs_are_refused(kwargs, match):
+    args = dict(t_span=(0, 1), y0=[0, 0, 0, 0.3, 0, 0, 2.0, 0.5])
+    args.update(kwargs)
+    with pytest.raises(ValueError, match=match):
+        simulate(Disk(h=0.1), "rough", args.pop("t_span"), args.pop("y0"), **args)
+
+
+@pytest.mark.parametrize("method", ["dop853", "scipy"])
+def test_a_first_step_of_zero_is_a_status_not_an_exception(method):
+    m = steady_motion(Disk(h=0.1), "rough", 0.3, Omega0=1e100)
+    tr = simulate_steady(m, 1.0, method=method)
+    assert tr.status == "failed" and tr.message.startswith("failed")
+
+
+def test_public_functions_validate_their_arguments():
+    from rollingdisk import ParameterError, ParameterTypeError, energy, equations_of_motion
+
+    with pytest.raises(ParameterTypeError, match="disk"):
+        contact_force(None, "rough", [0, 0, 0, 0.3, 0, 0, 1, 0])
+    with pytest.raises(ParameterError, match="8 components"):
+        equations_of_motion(Disk(h=0.1), "rough")(0, None)
+    with pytest.raises(ParameterError, match="finite"):
+        energy(Disk(h=0.1), "rough", [0, 0, 0, math.nan, 0, 0, 1, 0])
+
+
+def test_compare_with_theory_one_rule_for_both_kinds():
+    from rollingdisk import compare_with_theory
+
+    stable = steady_motion(Disk(h=0.1), "rough", 0.3, Omega0=3.0)
+    c = compare_with_theory(simulate_steady(stable, 40.0, perturb=1e-6))
+    assert c.kind == "frequency" and c.rel_error < 1e-3
+    s = stability(stable)
+    assert c.predicted == pytest.approx(s.varpi)
+    with pytest.raises(TypeError):
+        compare_with_theory(simulate(Disk(h=0.1), "rough", (0, 1), stable.initial_state()))

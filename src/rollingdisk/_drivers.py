@@ -12,7 +12,6 @@ contact before a lift-off at the same instant.
 
 from __future__ import annotations
 
-import math
 import time
 
 import numpy as np
@@ -232,7 +231,7 @@ def run_scipy(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_ev
             a, b = u_old[k], u_new[k]
             d = getattr(e, "direction", 0)
             if (a < 0 <= b or a > 0 >= b) and not (d > 0 and a > b) and not (d < 0 and a < b):
-                tr = brentq(lambda s, e=e: e(s, sol(s)), t_old, t_new, xtol=4 * np.finfo(
+                tr = brentq(lambda s, e=e, sol=sol: e(s, sol(s)), t_old, t_new, xtol=4 * np.finfo(
                     float).eps) if b != 0 else t_new
                 if tr > t_stop:
                     continue

@@ -11,8 +11,8 @@ import math
 import sys
 from collections.abc import Sequence
 
-from .atlas import DEFAULT_H  # the default disk of the picture commands
 from ._files import Terminated, terminate_as_exception
+from .atlas import DEFAULT_H  # the default disk of the picture commands
 from .errors import ParameterError
 
 __all__ = ["main", "parse_angle"]
