@@ -17,7 +17,6 @@ import time
 import numpy as np
 
 from . import events as _ev
-from ._files import Terminated
 from .equations import equations_of_motion, state_index
 
 _CHUNK_SECONDS = 0.05
@@ -31,16 +30,31 @@ def _marks(t0, t1, progress):
     return [t0 + (t1 - t0) * i / 100 for i in range(1, 100)] + [t1]
 
 
+def _advance(marks, i, t):
+    """(next mark index, whether a mark was passed) after reaching time t."""
+    j = i
+    while j < len(marks) - 1 and marks[j] <= t:
+        j += 1
+    return j, j > i
+
+
 def _call(fn, *args):
-    """Call compiled code; a signal caught during it surfaces as itself (numba would wrap
-    a KeyboardInterrupt raised while it returns in a SystemError)."""
+    """Call compiled code with SIGINT and SIGTERM held back until it returns (a chunk lasts
+    about ``_CHUNK_SECONDS``): a signal then surfaces in Python as ``KeyboardInterrupt`` or
+    ``Terminated``, never inside numba's dispatcher (which would turn it into a
+    ``SystemError``)."""
+    import signal
+    import threading
+
+    mask = getattr(signal, "pthread_sigmask", None)
+    if mask is None or threading.current_thread() is not threading.main_thread():
+        return fn(*args)
+    held = {signal.SIGINT, signal.SIGTERM}
+    old = mask(signal.SIG_BLOCK, held)
     try:
         return fn(*args)
-    except SystemError as exc:
-        inner = exc.__cause__ or exc.__context__
-        if isinstance(inner, (KeyboardInterrupt, Terminated)):
-            raise inner from None
-        raise
+    finally:
+        mask(signal.SIG_SETMASK, old)
 
 
 def _dense_solution(segments, t_end):
@@ -95,10 +109,9 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
         if dense_output:
             segments.extend(zip(st, sdt, sy, sF))
         t_now = float(ts_c[-1]) if event >= 0 and len(ts_c) else tc
-        while i_mark < len(marks) - 1 and marks[i_mark] <= tc:
-            i_mark += 1
-        if progress is not None and (code != core.RUNNING or tc >= marks[i_mark - 1]):
-            progress((t_now - t0) / (t1 - t0))
+        i_mark, crossed = _advance(marks, i_mark, tc)
+        if progress is not None and (code != core.RUNNING or crossed):
+            progress(float((t_now - t0) / (t1 - t0)))
         if code != core.RUNNING:
             break
     wall = time.perf_counter() - start
@@ -260,11 +273,10 @@ def run_scipy(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_ev
                 out.add([t_stop], [y_stop])
         t_now = t_stop
         g_old, u_old = g_new, u_new
-        while i_mark < len(marks) - 1 and marks[i_mark] <= t_now:
-            i_mark += 1
-        if progress is not None and (code != _ev.RUNNING or t_now >= marks[i_mark - 1]
+        i_mark, crossed = _advance(marks, i_mark, t_now)
+        if progress is not None and (code != _ev.RUNNING or crossed
                                      or solver.status == "finished"):
-            progress((t_now - t0) / (t1 - t0))
+            progress(float((t_now - t0) / (t1 - t0)))
     wall = time.perf_counter() - start
     sol = None
     if dense_output and segments:

@@ -17,6 +17,9 @@ falsi, so a guard that dips below 0 inside one step is found whatever the tolera
 Output at requested times ``t_eval`` comes from the same interpolant.  :func:`integrate`
 runs in chunks (it pauses after a number of steps or at a time mark without changing the
 steps), so that the caller can report progress and let Ctrl-C or SIGTERM through.
+
+Over 500 lines on purpose: every compiled function lives here so that the stale-cache guard
+(:func:`rhs_matches_kernels`, :func:`recompile_all`) reaches all of them.
 """
 
 from __future__ import annotations
