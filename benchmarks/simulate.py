@@ -6,8 +6,8 @@ One job, the same for both: a rough-ground disk (h = 0.1) on a steady circle
 ``scipy.integrate.solve_ivp(method="DOP853")`` on the plain numpy right-hand side
 ``rollingdisk.equations_of_motion``.  Prints wall time, steps/s, right-hand-side
 evaluations/s and relative energy drift of each, and their ratio, and the cost of the
-guards (located on the dense output inside every step) against a run without them.  The JIT compile time
-is measured apart: cold (empty numba cache, in a subprocess) and warm (loading the cache).
+guards (located on the dense output inside every step) against a run without them.  The JIT
+compile time is measured apart: cold (empty numba cache, in a subprocess) and warm (loading the cache).
 
 Run:  python benchmarks/simulate.py [--T 1000] [--repeat 3]
 """
