@@ -7,7 +7,8 @@ One job, the same for both: a rough-ground disk (h = 0.1) on a steady circle
 ``rollingdisk.equations_of_motion``.  Prints wall time, steps/s, right-hand-side
 evaluations/s and relative energy drift of each, and their ratio, and the cost of the
 guards (located on the dense output inside every step) against a run without them.  The JIT
-compile time is measured apart: cold (empty numba cache, in a subprocess) and warm (loading the cache).
+compile time is measured apart: cold (empty numba cache, in a subprocess) and warm (loading
+the cache).
 
 Run:  python benchmarks/simulate.py [--T 1000] [--repeat 3]
 """
