@@ -33,7 +33,7 @@ def test_json_from_an_arbitrary_state(capsys):
         assert key in rec
     assert rec["status"] == "completed" and rec["t_end"] == 20.0
     assert rec["varpi"] is None  # no steady motion to predict from
-    tr = simulate(Disk(h=0.1), "rough", [0, 0, 0, 0.3, 0, 0, 2.0, 0.5], (0, 20))
+    tr = simulate(Disk(h=0.1), "rough", (0, 20), [0, 0, 0, 0.3, 0, 0, 2.0, 0.5])
     assert rec["n_steps"] == tr.n_steps
     assert rec["energy_drift"] == pytest.approx(energy_drift(tr), rel=1e-6, abs=1e-15)
     assert rec["theta_min"] == pytest.approx(tr.theta.min())
@@ -67,7 +67,7 @@ def test_csv_output(tmp_path, capsys):
     assert rows[0] == COLUMNS
     data = np.array(rows[1:], dtype=float)
     # without --json the run reports progress; it takes the steps of a plain run all the same
-    tr = simulate(Disk(h=0.1), "rough", [0, 0, 0, 0.3, 0, 0, 2.0, 0.5], (0, 5))
+    tr = simulate(Disk(h=0.1), "rough", (0, 5), [0, 0, 0, 0.3, 0, 0, 2.0, 0.5])
     assert data.shape == (tr.t.size, len(COLUMNS))
     np.testing.assert_allclose(data[:, COLUMNS.index("F_z")], tr.F_z, rtol=1e-8, atol=1e-10)
     np.testing.assert_allclose(data[:, -1], tr.E, rtol=1e-12)
@@ -139,3 +139,82 @@ def test_unstable_circle_reports_its_growth_rate(capsys):
                    "--t-end", "60")
     assert rec["varpi2"] < 0 and rec["varpi"] is None
     assert rec["growth_rate"] == pytest.approx(math.sqrt(-rec["varpi2"]), rel=1e-3)
+
+
+# ---------------------------------------------------------------------------- issue 8
+def _interrupt(tmp_path, sig, *extra):
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    import rollingdisk
+
+    src = os.path.dirname(os.path.dirname(rollingdisk.__file__))
+    cmd = [sys.executable, "-m", "rollingdisk", "simulate", "--h", "0.17", "--theta0", "0.5",
+           "--Omega0", "2", "--perturb", "0.01", "--t-end", "1e6", *extra]
+    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                         cwd=tmp_path, env=dict(os.environ, PYTHONPATH=src))
+    time.sleep(2.0)
+    p.send_signal(getattr(signal, sig))
+    t = time.monotonic()
+    out, err = p.communicate(timeout=30)
+    return p.returncode, time.monotonic() - t, out, err
+
+
+@pytest.mark.parametrize("sig,code,word,extra", [
+    ("SIGINT", 130, "interrupted", ("--json", "--out", "run.csv")),
+    pytest.param("SIGTERM", 143, "terminated", ("--json", "--out", "run.csv"),
+                 marks=pytest.mark.slow),
+    pytest.param("SIGINT", 130, "interrupted", ("--out", "run.csv"), marks=pytest.mark.slow),
+    pytest.param("SIGTERM", 143, "terminated", (), marks=pytest.mark.slow),
+    pytest.param("SIGINT", 130, "interrupted", ("--method", "scipy", "--json"),
+                 marks=pytest.mark.slow),
+])
+def test_a_signal_during_simulate_ends_cleanly(tmp_path, sig, code, word, extra):
+    # once SystemError: CPUDispatcher(...) returned a result with an exception set, or the
+    # signal waited for the end of the compiled loop; SIGTERM left a .tmp file behind
+    rc, dt, out, err = _interrupt(tmp_path, sig, *extra)
+    assert rc == code and dt < 2.0, (rc, dt, err)
+    last = err.replace("\r", "\n").strip().splitlines()[-1]
+    assert last == f"rollingdisk: {word}" and "Traceback" not in err
+    if "--json" in extra:
+        assert err.strip() == last  # the one line on stderr
+    assert os.listdir(tmp_path) == []  # no partial CSV, no temporary left
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root may write a read-only file")
+def test_simulate_refuses_a_read_only_out_before_the_work(tmp_path, capsys):
+    path = tmp_path / "ro.csv"
+    path.write_text("keep")
+    path.chmod(0o444)
+    assert main(["simulate", "--h", "0.1", "--theta0", "0.3", "--Omega0", "3", "--t-end", "1",
+                 "--out", str(path)]) == 2
+    assert "read-only" in capsys.readouterr().err and path.read_text() == "keep"
+
+
+def test_simulate_json_is_strict_and_a_step_budget_is_a_status(capsys):
+    rec = run_json(capsys, "--h", "0.1", "--theta0", "0.3", "--Omega0", "3",
+                   "--t-end", "1000", "--max-steps", "50")
+    assert rec["status"] == "step-budget" and rec["n_steps"] == 50
+    assert main(["simulate", "--h", "0.1", "--theta0", "0.3", "--Omega0", "3", "--t-end", "1",
+                 "--kick=1e300", "--json"]) == 2
+    assert "too large" in capsys.readouterr().err
+
+
+def test_simulate_out_streams_the_same_csv_as_the_trajectory(tmp_path, capsys):
+    path = tmp_path / "a.csv"
+    assert main(["simulate", "--h", "0.1", "--theta0", "0.3", "--Omega0", "3", "--t-end", "5",
+                 "--out", str(path), "--json"]) == 0
+    rows = np.loadtxt(path, delimiter=",", skiprows=1)
+    from rollingdisk import simulate_steady, steady_motion
+
+    tr = simulate_steady(steady_motion(Disk(h=0.1), "rough", 0.3, Omega0=3.0), 5.0)
+    assert np.array_equal(rows[:, 0], tr.t)
+    assert oct(path.stat().st_mode & 0o777) == oct(0o666 & ~_umask())
+
+
+def _umask():
+    m = os.umask(0)
+    os.umask(m)
+    return m

@@ -33,6 +33,7 @@ from rollingdisk import (
     oscillation_frequency,
     simulate,
     simulate_steady,
+    stability,
 )
 from rollingdisk.equations import _rough_rhs, _smooth_rhs, contact_force
 from rollingdisk.steady import steady_motion, straight_line
@@ -192,8 +193,8 @@ def test_default_tolerances_keep_energy_drift_below_1e9_over_1000(motion):
 @pytest.mark.parametrize("h", [0.0, 0.25])
 def test_compiled_integrator_takes_the_same_steps_as_scipy(ground, y0, h):
     disk = Disk(h=h)
-    a = simulate(disk, ground, y0, (0, 20), method="dop853", rtol=1e-10, atol=1e-10)
-    b = simulate(disk, ground, y0, (0, 20), method="scipy", rtol=1e-10, atol=1e-10)
+    a = simulate(disk, ground, (0, 20), y0, method="dop853", rtol=1e-10, atol=1e-10)
+    b = simulate(disk, ground, (0, 20), y0, method="scipy", rtol=1e-10, atol=1e-10)
     assert a.status == b.status == "completed"
     # same method, same step control: the same steps up to round-off in the error
     # estimate (a difference of nearly equal sums, so ~1e-7 relative in the step sizes)
@@ -226,14 +227,14 @@ def test_t_eval_output_matches_the_step_output():
     disk = Disk(h=0.2)
     y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
     te = np.linspace(0, 10, 37)
-    a = simulate(disk, "rough", y0, (0, 10), t_eval=te)
-    b = simulate(disk, "rough", y0, (0, 10), method="scipy", t_eval=te)
+    a = simulate(disk, "rough", (0, 10), y0, t_eval=te)
+    b = simulate(disk, "rough", (0, 10), y0, method="scipy", t_eval=te)
     assert a.status == b.status == "completed"
     np.testing.assert_array_equal(a.t, te)
     np.testing.assert_allclose(a.y, b.y, rtol=1e-9, atol=1e-9)
     # a run that stops exactly at each requested time agrees too
     for k in (5, 20, 36):
-        c = simulate(disk, "rough", y0, (0, te[k]))
+        c = simulate(disk, "rough", (0, te[k]), y0)
         np.testing.assert_allclose(a.y[:, k], c.y[:, -1], rtol=1e-9, atol=1e-9)
 
 
@@ -241,15 +242,15 @@ def test_progress_chunks_give_the_same_motion():
     disk = Disk(h=0.2)
     y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
     seen = []
-    a = simulate(disk, "rough", y0, (0, 50), progress=seen.append)
-    b = simulate(disk, "rough", y0, (0, 50))
+    a = simulate(disk, "rough", (0, 50), y0, progress=seen.append)
+    b = simulate(disk, "rough", (0, 50), y0)
     assert a.status == b.status == "completed"
     assert seen[-1] == pytest.approx(1.0) and 10 < len(seen) <= 100
     assert np.all(np.diff(seen) > 0)
     assert np.all(np.diff(a.t) > 0)
     np.testing.assert_allclose(a.y[:, -1], b.y[:, -1], rtol=1e-8, atol=1e-8)
     te = np.linspace(0, 50, 11)
-    c = simulate(disk, "rough", y0, (0, 50), t_eval=te, progress=lambda f: None)
+    c = simulate(disk, "rough", (0, 50), y0, t_eval=te, progress=lambda f: None)
     np.testing.assert_array_equal(c.t, te)
     np.testing.assert_allclose(c.y[:, -1], b.y[:, -1], rtol=1e-8, atol=1e-8)
 
@@ -260,8 +261,8 @@ def test_progress_takes_exactly_the_steps_of_a_plain_run(t_eval):
     # the tail of each chunk (1583 instead of 1302 steps here)
     disk = Disk(h=0.2)
     y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
-    a = simulate(disk, "rough", y0, (0, 100), t_eval=t_eval)
-    b = simulate(disk, "rough", y0, (0, 100), t_eval=t_eval, progress=lambda f: None)
+    a = simulate(disk, "rough", (0, 100), y0, t_eval=t_eval)
+    b = simulate(disk, "rough", (0, 100), y0, t_eval=t_eval, progress=lambda f: None)
     assert a.status == b.status == "completed"
     assert a.n_steps == b.n_steps
     assert b.n_rhs - a.n_rhs <= 100  # f once more at each pause, nothing else
@@ -277,14 +278,14 @@ def test_t_eval_output_is_the_dense_output_of_scipys_dop853():
     disk = Disk(h=0.2)
     y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
     te = np.linspace(0, 100, 2001)
-    a = simulate(disk, "rough", y0, (0, 100), t_eval=te)
+    a = simulate(disk, "rough", (0, 100), y0, t_eval=te)
     ref = solve_ivp(equations_of_motion(disk, "rough"), (0, 100), y0, method="DOP853",
                     rtol=DEFAULT_RTOL, atol=DEFAULT_ATOL, t_eval=te)
     np.testing.assert_array_equal(a.t, te)
     scale = np.max(np.abs(ref.y), axis=1, keepdims=True)
     assert np.max(np.abs(a.y - ref.y) / scale) < 1e-11
     # dense output: 3 evaluations per step, not a 12-stage step per requested time
-    b = simulate(disk, "rough", y0, (0, 100))
+    b = simulate(disk, "rough", (0, 100), y0)
     assert a.n_steps == b.n_steps
     assert a.n_rhs <= b.n_rhs + 3 * b.n_steps < b.n_rhs + 12 * te.size
 
@@ -292,7 +293,7 @@ def test_t_eval_output_is_the_dense_output_of_scipys_dop853():
 def test_thin_disk_passes_through_theta_zero():
     # h = 0: theta = 0 is an ordinary state (upright), no edge contact
     y0 = [0, 0, 0, 0.05, 0, -0.5, 1.5, 0]  # rolling, tipping through upright
-    tr = simulate(Disk(h=0.0), "rough", y0, (0, 50))
+    tr = simulate(Disk(h=0.0), "rough", (0, 50), y0)
     assert tr.status == "completed"
     assert tr.theta.min() < -0.04 and tr.theta.max() > 0.04
     assert energy_drift(tr) < 1e-10
@@ -316,8 +317,8 @@ GUARD_CASES = [
 @pytest.mark.parametrize("status,h,ground,y0", GUARD_CASES)
 def test_guard_events_stop_the_run(status, h, ground, y0):
     disk = Disk(h=h)
-    a = simulate(disk, ground, y0, (0, 20))
-    b = simulate(disk, ground, y0, (0, 20), method="scipy")
+    a = simulate(disk, ground, (0, 20), y0)
+    b = simulate(disk, ground, (0, 20), y0, method="scipy")
     assert a.status == b.status == status
     assert a.t_event == pytest.approx(b.t_event, rel=1e-9, abs=1e-9)
     assert a.t[-1] == a.t_event < 20
@@ -342,12 +343,12 @@ def test_start_with_negative_normal_force_is_immediate_lift_off():
     y0 = [0, 0, 0, 0.1, 0, 2.0, 0, 0]  # fast tipping near upright: F_z < 0 already
     assert contact_force(Disk(h=0.0), "rough", y0)[2] < 0
     for method in ("dop853", "scipy"):
-        tr = simulate(Disk(h=0.0), "rough", y0, (0, 1), method=method)
+        tr = simulate(Disk(h=0.0), "rough", (0, 1), y0, method=method)
         assert tr.status == "lift-off" and tr.t_event == 0.0 and tr.t.size == 1
 
 
 def test_guards_off_integrates_through():
-    tr = simulate(Disk(h=0.2), "rough", [0, 0, 0, 0.1, 0, -0.5, 1.0, 0], (0, 0.3),
+    tr = simulate(Disk(h=0.2), "rough", (0, 0.3), [0, 0, 0, 0.1, 0, -0.5, 1.0, 0],
                   guards=False)
     assert tr.status == "completed" and tr.theta[-1] < 0
 
@@ -359,13 +360,13 @@ def test_user_events_run_through_scipy():
     half.terminal = True
     half.direction = 1
     y0 = [0, 0, 0, 0.3, 0, 0.1, 2.0, 0.5]
-    tr = simulate(Disk(h=0.1), "rough", y0, (0, 20), events=half)
+    tr = simulate(Disk(h=0.1), "rough", (0, 20), y0, events=half)
     assert tr.method == "scipy" and tr.status == "completed"
     assert tr.theta[-1] == pytest.approx(0.35, abs=1e-10)
     assert "user event 0" in tr.message
     assert len(tr.t_events) == 1 and tr.t_events[0][0] == pytest.approx(tr.t[-1])
     with pytest.raises(ValueError, match="events"):
-        simulate(Disk(h=0.1), "rough", y0, (0, 20), events=half, method="dop853")
+        simulate(Disk(h=0.1), "rough", (0, 20), y0, events=half, method="dop853")
 
 
 def _time_event(at, terminal):
@@ -381,7 +382,7 @@ def test_only_a_terminal_user_event_stops_the_run(t_eval):
     # a non-terminal event was once reported as the one that stopped the run, and its time
     # appended to t after the end
     y0 = [0, 0, 0, 0.3, 0, 0.1, 2.0, 0.5]
-    tr = simulate(Disk(h=0.1), "rough", y0, (0, 20), t_eval=t_eval,
+    tr = simulate(Disk(h=0.1), "rough", (0, 20), y0, t_eval=t_eval,
                   events=[_time_event(1.0, False), _time_event(3.0, True)])
     assert tr.status == "completed"
     assert np.all(np.diff(tr.t) > 0)
@@ -398,7 +399,7 @@ def test_a_user_event_with_a_terminal_count_stops_at_that_count():
 
     wave.terminal = 2  # solve_ivp: stop at the 2nd occurrence
     y0 = [0, 0, 0, 0.3, 0, 0.1, 2.0, 0.5]
-    tr = simulate(Disk(h=0.1), "rough", y0, (0, 20), events=[_time_event(1.0, False), wave])
+    tr = simulate(Disk(h=0.1), "rough", (0, 20), y0, events=[_time_event(1.0, False), wave])
     assert tr.t[-1] == pytest.approx(1.5, abs=1e-10)
     assert "user event 1 at t = 1.5" in tr.message
     np.testing.assert_allclose(tr.t_events[1], [0.5, 1.5], atol=1e-10)
@@ -414,14 +415,14 @@ def test_fit_circle_is_exact_on_a_circle():
 
 
 def test_oscillation_frequency_none_without_oscillation():
-    tr = simulate(Disk(h=0.1), "rough", [0, 0, 0, 0.5, 0, 0, 0, 0], (0, 0.5))
+    tr = simulate(Disk(h=0.1), "rough", (0, 0.5), [0, 0, 0, 0.5, 0, 0, 0, 0])
     assert oscillation_frequency(tr) is None
 
 
 # ---------------------------------------------------------------------------- the result
 def test_trajectory_is_frozen_and_named():
     y0 = [0, 0, 0, 0.3, 0, 0.1, 2.0, 0.5]
-    tr = simulate(Disk(h=0.1), "rough", y0, (0, 1))
+    tr = simulate(Disk(h=0.1), "rough", (0, 1), y0)
     assert isinstance(tr, Trajectory)
     with pytest.raises(AttributeError):
         tr.status = "x"
@@ -449,14 +450,14 @@ def test_simulate_steady_perturbs_theta_only():
 
 
 def test_simulate_steady_keeps_the_disk_of_the_motion():
-    from types import SimpleNamespace
-
-    m = circle("rough", 0.1, 0.3, 3.0)
-    disk = Disk(h=0.1, radius=0.05, mass=0.2)  # a physical disk: SI conversions need it
-    wrapped = SimpleNamespace(ground=m.ground, h=m.h, theta0=m.theta0, disk=disk,
-                              initial_state=m.initial_state)
-    tr = simulate_steady(wrapped, 1.0, perturb=1e-3)
-    assert tr.disk is disk
+    # real objects all the way: a physical disk (radius, mass) through steady_motion and
+    # straight_line into the trajectory, whose SI conversions need them
+    disk = Disk(h=0.1, radius=0.05, mass=0.2)
+    for m in (steady_motion(disk, "rough", 0.3, Omega0=3.0),
+              straight_line(disk, "smooth", 1.0)):
+        assert m.disk is disk and m.h == 0.1
+        tr = simulate_steady(m, 1.0, perturb=1e-3)
+        assert tr.disk is disk and tr.disk.radius == 0.05 and tr.disk.mass == 0.2
 
 
 @pytest.mark.parametrize("theta0,perturb", [(0.3, -0.3), (0.3, 1.3), (-1.2, -0.4)])
@@ -494,12 +495,12 @@ def test_invalid_input_raises_valueerror_naming_the_parameter(kwargs, match):
                 t_span=(0, 1))
     args.update(kwargs)
     with pytest.raises(ValueError, match=match):
-        simulate(args.pop("disk"), args.pop("ground"), args.pop("y0"), args.pop("t_span"),
+        simulate(args.pop("disk"), args.pop("ground"), args.pop("t_span"), args.pop("y0"),
                  **args)
 
 
 def test_simulate_steady_rejects_non_motions():
-    with pytest.raises(ValueError, match="SteadyMotion"):
+    with pytest.raises(TypeError, match="SteadyMotion"):
         simulate_steady(object(), 1.0)
     with pytest.raises(ValueError, match="t_end"):
         simulate_steady(circle("rough", 0.1, 0.3, 3.0), -1.0)
@@ -536,7 +537,7 @@ def test_import_is_light_and_the_core_needs_no_sympy_or_matplotlib():
             "import rollingdisk\n"
             "assert 'numba' not in sys.modules, 'import rollingdisk must not load numba'\n"
             "tr = rollingdisk.simulate(rollingdisk.Disk(h=0.1), 'rough',"
-            " [0, 0, 0, 0.3, 0, 0, 2.0, 0.5], (0, 1))\n"
+            " (0, 1), [0, 0, 0, 0.3, 0, 0, 2.0, 0.5])\n"
             "assert tr.status == 'completed' and 'numba' in sys.modules\n")
     import os
 
@@ -552,8 +553,8 @@ def test_import_is_light_and_the_core_needs_no_sympy_or_matplotlib():
                                     np.linspace(0, 0.15, 4)])
 def test_event_output_is_the_same_with_and_without_progress_chunks(t_eval):
     y0 = [0, 0, 0, 0.1, 0, -0.5, 1.0, 0]  # lands on its other edge at t ~ 0.2
-    a = simulate(Disk(h=0.2), "rough", y0, (0, 20), t_eval=t_eval)
-    b = simulate(Disk(h=0.2), "rough", y0, (0, 20), t_eval=t_eval, progress=lambda f: None)
+    a = simulate(Disk(h=0.2), "rough", (0, 20), y0, t_eval=t_eval)
+    b = simulate(Disk(h=0.2), "rough", (0, 20), y0, t_eval=t_eval, progress=lambda f: None)
     assert a.status == b.status == "edge-contact"
     assert a.t_event == pytest.approx(b.t_event, abs=1e-12)
     if t_eval is not None:
@@ -579,7 +580,6 @@ STEADY_ROWS = [
 @pytest.mark.parametrize("row", STEADY_ROWS, ids=str)
 def test_simulation_confirms_the_stability_module(row):
     """Closed-form varpi^2 of rollingdisk.stability vs the simulated motion (both ways)."""
-    from rollingdisk import stability
     from rollingdisk.steady import steady_motion, straight_line
 
     ground, h, theta0, kind, value = row
@@ -608,3 +608,100 @@ def test_simulation_confirms_the_stability_module(row):
     if kind != "omega0":
         assert fit_circle(tr0.X_P, tr0.Y_P)[2] == pytest.approx(abs(m.r_P), rel=1e-8,
                                                                  abs=1e-10)
+
+
+# ---------------------------------------------------------------------------- issue 8
+_LIFT_IN_STEP = [0, 0, 0, -0.7679, 0, -0.8403, -1.2908, 1.1468]  # h = 1
+
+
+@pytest.mark.parametrize("method", ["dop853", "scipy"])
+def test_every_option_means_the_same_on_both_paths(method):
+    y0 = [0, 0, 0, 0.3, 0, 0, 2.0, 0.5]
+    seen = []
+    tr = simulate(Disk(h=0.1), "rough", (0, 10), y0, method=method, max_steps=3,
+                  progress=seen.append)
+    assert tr.status == "step-budget" and tr.n_steps == 3 and not tr.success
+    assert seen and seen[-1] < 1
+    seen = []
+    tr = simulate(Disk(h=0.1), "rough", (0, 10), y0, method=method, progress=seen.append,
+                  dense_output=True)
+    assert tr.status == "completed" and seen[-1] == 1.0 and np.all(np.diff(seen) >= 0)
+    # dense output interpolates the stored steps exactly at their ends
+    assert np.allclose(tr.sol(tr.t[5]), tr.y[:, 5], rtol=0, atol=1e-12)
+    chunks = []
+    streamed = simulate(Disk(h=0.1), "rough", (0, 10), y0, method=method,
+                        sink=lambda t, y: chunks.append((t, y)))
+    assert np.array_equal(np.concatenate([c[0] for c in chunks]), tr.t)
+    assert streamed.t.tolist() == [tr.t[0], tr.t[-1]]
+
+
+@pytest.mark.parametrize("method", ["dop853", "scipy"])
+def test_lift_off_inside_one_step_is_found_at_loose_tolerance(method):
+    # F_z dips to about -0.008 inside one step near t = 0.0106 (found by a robustness
+    # sweep); guards sampled only at step ends missed it and ran on to t = 2.376
+    tr = simulate(Disk(h=1.0), "rough", (0, 30), _LIFT_IN_STEP, method=method, rtol=1e-6,
+                  atol=1e-8)
+    assert tr.status == "lift-off" and tr.t_event < 0.011
+    # the same event as at tight tolerance
+    ref = simulate(Disk(h=1.0), "rough", (0, 30), _LIFT_IN_STEP, method=method)
+    assert ref.status == "lift-off" and tr.t_event == pytest.approx(ref.t_event, abs=1e-6)
+
+
+@pytest.mark.parametrize("method", ["dop853", "scipy"])
+def test_edge_contact_is_not_reported_as_lift_off(method):
+    # theta reaches 0, where h~ = h sgn(theta) makes F_z jump below 0: an edge contact
+    tr = simulate(Disk(h=3.0), "rough", (0, 20), [0, 0, 0, 0.1, 0, -0.2, -2, -0.3],
+                  method=method)
+    assert tr.status == "edge-contact" and tr.t_event == pytest.approx(0.4241435, abs=1e-6)
+    assert tr.F_z[-1] > 0 and tr.theta[-1] > 0
+
+
+@pytest.mark.parametrize("method", ["dop853", "scipy"])
+def test_lift_off_at_the_start_with_t_eval_gives_one_point(method):
+    tr = simulate(Disk(h=0.1), "rough", (0, 1), [0, 0, 0, 0.3, 0, 10.0, 0, 0], method=method,
+                  t_eval=[0.0, 0.5])
+    assert tr.status == "lift-off" and tr.t.tolist() == [0.0]
+
+
+@pytest.mark.parametrize("kwargs,match", [
+    (dict(y0=[0, 0, 0, 0.3, 0, 0, 1e300, 0]), "too large"),
+    (dict(y0=[0, 0, 0, 0.3, 0, math.nan, 1, 0]), "finite"),
+    (dict(t_span=(0, 1e300)), "t_span"),
+    (dict(rtol=2.0), "rtol"),
+    (dict(rtol=1e-17), "rtol"),
+])
+def test_absurd_inputs_are_refused(kwargs, match):
+    args = dict(t_span=(0, 1), y0=[0, 0, 0, 0.3, 0, 0, 2.0, 0.5])
+    args.update(kwargs)
+    with pytest.raises(ValueError, match=match):
+        simulate(Disk(h=0.1), "rough", args.pop("t_span"), args.pop("y0"), **args)
+
+
+@pytest.mark.parametrize("method", ["dop853", "scipy"])
+def test_a_first_step_of_zero_is_a_status_not_an_exception(method):
+    m = steady_motion(Disk(h=0.1), "rough", 0.3, Omega0=1e100)
+    tr = simulate_steady(m, 1.0, method=method)
+    assert tr.status == "failed" and tr.message.startswith("failed")
+
+
+def test_public_functions_validate_their_arguments():
+    from rollingdisk import ParameterError, ParameterTypeError, energy, equations_of_motion
+
+    with pytest.raises(ParameterTypeError, match="disk"):
+        contact_force(None, "rough", [0, 0, 0, 0.3, 0, 0, 1, 0])
+    with pytest.raises(ParameterError, match="8 components"):
+        equations_of_motion(Disk(h=0.1), "rough")(0, None)
+    with pytest.raises(ParameterError, match="finite"):
+        energy(Disk(h=0.1), "rough", [0, 0, 0, math.nan, 0, 0, 1, 0])
+
+
+def test_compare_with_theory_one_rule_for_both_kinds():
+    from rollingdisk import compare_with_theory
+
+    stable = steady_motion(Disk(h=0.1), "rough", 0.3, Omega0=3.0)
+    c = compare_with_theory(simulate_steady(stable, 40.0, perturb=1e-6))
+    assert c.kind == "frequency" and c.rel_error < 1e-3
+    s = stability(stable)
+    assert c.predicted == pytest.approx(s.varpi)
+    with pytest.raises(TypeError):
+        compare_with_theory(simulate(Disk(h=0.1), "rough", (0, 1), stable.initial_state()))

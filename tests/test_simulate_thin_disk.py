@@ -105,7 +105,7 @@ def test_thin_disk_agrees_with_independent_euler_angle_model(ground, y0):
     f = thin_disk_model(ground)
     T = 20.0
     te = np.linspace(0, T, 81)
-    tr = simulate(Disk(h=0.0), ground, y0, (0, T), t_eval=te, rtol=1e-12, atol=1e-13)
+    tr = simulate(Disk(h=0.0), ground, (0, T), y0, t_eval=te, rtol=1e-12, atol=1e-13)
     assert tr.status == "completed"
     if ground == "rough":
         X, Y, psi, th, phi, w1, w2, w3 = y0
@@ -136,7 +136,7 @@ def test_thin_disk_agrees_with_kanes_method_example(y0):
     from thin_disk_kane import integrate_thin_disk
 
     te = np.linspace(0, 20, 41)
-    tr = simulate(Disk(h=0.0), "rough", y0, (0, 20), t_eval=te, rtol=1e-12, atol=1e-13)
+    tr = simulate(Disk(h=0.0), "rough", (0, 20), y0, t_eval=te, rtol=1e-12, atol=1e-13)
     ref = integrate_thin_disk(y0, te).T
     assert tr.status == "completed"
     np.testing.assert_allclose(tr.y, ref, rtol=0, atol=1e-8)
@@ -152,7 +152,7 @@ def test_thick_disk_agrees_with_kanes_method(ground, h, y0):
 
     T = 5.0
     te = np.linspace(0, T, 11)
-    tr = simulate(Disk(h=h), ground, y0, (0, T), t_eval=te, rtol=1e-12, atol=1e-13)
+    tr = simulate(Disk(h=h), ground, (0, T), y0, t_eval=te, rtol=1e-12, atol=1e-13)
     assert tr.status == "completed"
     ref = solve_ivp(kane_rhs(ground, h), (0, T), y0, method="DOP853", t_eval=te, rtol=1e-12,
                     atol=1e-13)

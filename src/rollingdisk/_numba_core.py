@@ -10,12 +10,16 @@ The integrator is the explicit Runge-Kutta method of Dormand and Prince of order
 the 5th/3rd order error estimator (DOP853, Hairer, Norsett & Wanner, *Solving ODE I*,
 sec. II.10), with the same coefficients (taken from scipy) and the same step-size control
 as ``scipy.integrate.solve_ivp(method="DOP853")``, so both take the same steps.  Guard
-events are checked at the end of every accepted step and located by the Illinois variant of
-regula falsi on the step length, re-integrating one DOP853 step from the start of the
-step for each trial (a shorter step of the same method is at least as accurate as the
-accepted one).  Output at requested times ``t_eval`` comes from the 7th-degree dense
-output of DOP853 (the interpolant of scipy's ``DOP853.dense_output``, 3 extra right-hand
-side evaluations per step that holds requested times).
+events (:mod:`rollingdisk.events`) are sampled on the 7th-degree dense output of DOP853 (the
+interpolant of scipy's ``DOP853.dense_output``, 3 extra right-hand-side evaluations per
+step) at 7 inner points of every step and located on it by the Illinois variant of regula
+falsi, so a guard that dips below 0 inside one step is found whatever the tolerance.
+Output at requested times ``t_eval`` comes from the same interpolant.  :func:`integrate`
+runs in chunks (it pauses after a number of steps or at a time mark without changing the
+steps), so that the caller can report progress and let Ctrl-C or SIGTERM through.
+
+Over 500 lines on purpose: every compiled function lives here so that the stale-cache guard
+(:func:`rhs_matches_kernels`, :func:`recompile_all`) reaches all of them.
 """
 
 from __future__ import annotations
@@ -42,6 +46,7 @@ except (ImportError, AttributeError) as _exc:  # pragma: no cover - depends on s
     ) from _exc
 
 from . import equations as _eq
+from . import events as _ev
 
 # ------------------------------------------------------------------ compiled kernels
 _ns = dict(_eq.__dict__)
@@ -64,7 +69,8 @@ _rough_rhs = _compile("_rough_rhs")
 _smooth_rhs = _compile("_smooth_rhs")
 _reduced_state = _compile("_reduced_state")
 _reduced_rhs = _compile("_reduced_rhs")
-_normal_force = _compile("_normal_force")  # eq. (11), for the lift-off guard
+_normal_force = _compile("_normal_force")  # eq. (11)
+_side_normal_force = _compile("_side_normal_force")  # eq. (11), for the lift-off guard
 
 # ------------------------------------------------------------------ DOP853 coefficients
 _NS = _dop.N_STAGES  # 12
@@ -83,8 +89,10 @@ _MIN_FACTOR = 0.2
 _MAX_FACTOR = 10.0
 _ERR_EXP = -1.0 / 8.0  # error estimator of order 7
 
-# status codes shared with simulate.py
-RUNNING, COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED = 0, 1, 2, 3, 4, 5
+# status codes shared with rollingdisk.events
+RUNNING, COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED, STEP_BUDGET = (
+    _ev.RUNNING, _ev.COMPLETED, _ev.LIFT_OFF, _ev.EDGE_CONTACT, _ev.FELL_FLAT, _ev.FAILED,
+    _ev.STEP_BUDGET)
 
 
 @numba.njit(cache=True)
@@ -228,6 +236,8 @@ def initial_step(rough, h, t0, y0, f0, t_bound, max_step, rtol, atol):
     else:
         h0 = 0.01 * d0 / d1
     h0 = min(h0, interval)
+    if not h0 > 0.0:  # d1 overflowed (or interval is subnormal): no usable first step
+        return 0.0
     y1 = y0 + h0 * f0
     f1 = np.empty(n)
     _rhs(rough, h, y1, f1)
@@ -240,100 +250,130 @@ def initial_step(rough, h, t0, y0, f0, t_bound, max_step, rtol, atol):
 
 
 @numba.njit(cache=True)
-def _fired(k, g_old, g_new):
-    """True if guard k fired in the step from guard values g_old to g_new.
-
-    theta (k = 1) fires when it reaches 0 or changes sign; the others when they reach 0.
-    """
-    if k == 1:
-        return g_new[1] == 0.0 or (g_old[1] > 0.0) != (g_new[1] > 0.0)
-    return g_new[k] <= 0.0
+def _side_guards(rough, h, y, side, g):
+    """Guard values on the side ``side = sgn(theta(0))``, each positive while admissible
+    (:mod:`rollingdisk.events`): g[0] = F_z with ``h~ = h side`` (eq. 11), g[1] =
+    ``theta side``, g[2] = ``pi/2 - |theta|``."""
+    theta = _reduced_state(rough, y)[0]
+    g[0] = _side_normal_force(rough, h, y, side)
+    g[1] = theta * side
+    g[2] = 0.5 * np.pi - abs(theta)
 
 
 @numba.njit(cache=True)
-def _triggered(g_old, g_new, use):
-    """Index of a guard that fired in the step (first in order), or -1."""
-    for k in range(3):
-        if use[k] and _fired(k, g_old, g_new):
+def _first_fired(g, use):
+    """The guard that is not positive in g (edge contact first, then lift-off, then
+    falling flat: at one instant an edge contact wins), or -1."""
+    for k in (1, 0, 2):
+        if use[k] and g[k] <= 0.0:
             return k
     return -1
 
 
-@numba.njit(cache=True)
-def _guard_value(k, g, sign1):
-    # For the theta guard, measure in the direction of the sign theta had at the start.
-    if k == 1:
-        return g[1] * sign1
-    return g[k]
+_NSUB = 8  # guards sampled on the dense output at 7 inner points of every step
 
 
 @numba.njit(cache=True)
-def _locate(rough, h, t, y, f, dt_hi, k, sign1, K, ytmp, y_try, f_try, g, xtol):
-    """Illinois regula falsi for the root of guard k within (t, t + dt_hi].
-
-    Returns (dt_root, n_rhs); y_try holds the state at dt_root, the admissible end of the
-    final bracket (within xtol of the root), or the start state if the guard is not
-    positive there.
-    """
-    n_rhs = 0
-    a = 0.0
-    _guards(rough, h, y, g)
-    ga = _guard_value(k, g, sign1)
-    b = dt_hi
-    _step(rough, h, t, y, f, b, K, ytmp, y_try, f_try)
-    n_rhs += _NS
-    _guards(rough, h, y_try, g)
-    gb = _guard_value(k, g, sign1)
-    if ga > 0.0 and not (gb <= 0.0):
-        return b, n_rhs  # nothing to bracket: the guard is positive at the end
-    side = 0
-    # (no bracket either when the guard is non-positive at the start: a = 0 below)
-    for _ in range(200 if ga > 0.0 else 0):
-        if abs(b - a) <= xtol:
+def _guard_root(rough, h, y, F, side, k, xa, xb, ga, gb, ytmp, g):
+    """Illinois regula falsi on the interpolant for the root of guard k in (xa, xb], with
+    guard k positive (ga) at xa and not positive (gb) at xb.  Returns the last admissible
+    fraction of the step (within round-off of the root)."""
+    side_flag = 0
+    for _ in range(200):
+        if xb - xa <= 4e-16 * max(1.0, xb):
             break
-        c = (a * gb - b * ga) / (gb - ga)
-        if not (a < c < b):
-            c = 0.5 * (a + b)
-        _step(rough, h, t, y, f, c, K, ytmp, y_try, f_try)
-        n_rhs += _NS
-        _guards(rough, h, y_try, g)
-        gc = _guard_value(k, g, sign1)
+        xc = (xa * gb - xb * ga) / (gb - ga)
+        if not (xa < xc < xb):
+            xc = 0.5 * (xa + xb)
+        _dense_value(y, F, xc, ytmp)
+        _side_guards(rough, h, ytmp, side, g)
+        gc = g[k]
         if gc > 0.0:
-            a, ga = c, gc
-            if side == -1:
+            xa, ga = xc, gc
+            if side_flag == -1:
                 gb *= 0.5
-            side = -1
+            side_flag = -1
         else:
-            b, gb = c, gc
-            if side == 1:
+            xb, gb = xc, gc
+            if side_flag == 1:
                 ga *= 0.5
-            side = 1
-    # report the last admissible point, the bracket's lower end a (guard > 0 there, within
-    # xtol of the root): the state before the event, where the model still holds
-    if a == 0.0:
-        for i in range(y.shape[0]):
-            y_try[i] = y[i]
-    else:
-        _step(rough, h, t, y, f, a, K, ytmp, y_try, f_try)
-        n_rhs += _NS
-    return a, n_rhs
+            side_flag = 1
+    return xa
+
+
+@numba.njit(cache=True)
+def _locate_on_dense(rough, h, y, y_new, F, side, use, g_old, g_new, ytmp, g, g2):
+    """First guard root inside the step, located on its dense output.
+
+    The guards are sampled at the fractions ``j / _NSUB`` of the step; in the first
+    sub-interval where one is no longer positive each guard that fired there is refined on
+    the interpolant and the earliest root wins (ties: :func:`_first_fired`'s order).
+    Returns ``(k, x)``: the guard and the admissible fraction of the step just before its
+    root, or ``(-1, 1.0)``.
+    """
+    for i in range(3):
+        g2[i] = g_old[i]
+    x_prev = 0.0
+    for j in range(1, _NSUB + 1):
+        x = j / _NSUB
+        if j == _NSUB:
+            for i in range(3):
+                g[i] = g_new[i]
+        else:
+            _dense_value(y, F, x, ytmp)
+            _side_guards(rough, h, ytmp, side, g)
+        if _first_fired(g, use) >= 0:
+            best_k = -1
+            best_x = x
+            gb = np.empty(3)
+            for i in range(3):
+                gb[i] = g[i]
+            for k in (1, 0, 2):
+                if use[k] and gb[k] <= 0.0:
+                    if not (g2[k] > 0.0):  # not positive at the start: stop there
+                        xk = x_prev
+                    else:
+                        xk = _guard_root(rough, h, y, F, side, k, x_prev, x, g2[k], gb[k],
+                                         ytmp, g)
+                    if best_k == -1 or xk < best_x:
+                        best_k = k
+                        best_x = xk
+            return best_k, best_x
+        for i in range(3):
+            g2[i] = g[i]
+        x_prev = x
+    return -1, 1.0
+
+
+@numba.njit(cache=True)
+def _grow(ts, ys, m):
+    """Output arrays of twice the size, holding the first m rows."""
+    cap = 2 * ts.shape[0]
+    ts2 = np.empty(cap)
+    ys2 = np.empty((cap, ys.shape[1]))
+    ts2[:m] = ts[:m]
+    ys2[:m] = ys[:m]
+    return ts2, ys2, cap
 
 
 @numba.njit(cache=True)
 def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atol, max_step, first_step, use_guards,
-              t_eval, has_t_eval, max_steps):
+              side, t_eval, has_t_eval, max_steps, chunk_steps, keep_dense):
     """Integrate from (t0, y0) to t_end, stopping at the first guard event.
 
-    Pauses (status RUNNING) after the first accepted step that reaches ``t_pause < t_end``;
-    steps are never shortened to land on ``t_pause``, so a run continued from the returned
-    ``(t_last, y_last)`` with ``first_step = h_next`` takes the very steps of an
-    uninterrupted run.
+    Pauses (status RUNNING) after the first accepted step that reaches ``t_pause < t_end``
+    or after ``chunk_steps`` steps; steps are never shortened for a pause, so a run
+    continued from the returned ``(t_last, y_last)`` with ``first_step = h_next`` takes the
+    very steps of an uninterrupted run.  Guards are located on the dense output inside
+    every step (:func:`_locate_on_dense`), on the side ``side = sgn(theta(0))``.  Status
+    STEP_BUDGET once ``max_steps`` steps are taken, FAILED if the step size falls below
+    round-off (or the first step comes out 0).
 
-    Returns ``(ts, ys, n_steps, n_rhs, status, event, h_next, t_last, y_last)`` where
-    ``ts, ys`` are the accepted steps (or the values at ``t_eval``) followed by the event
-    point if one fired, ``status`` one of the codes above, ``event`` the index of the
-    guard that fired or -1, ``h_next`` the step size to try next and ``(t_last, y_last)``
-    the end of the last accepted step.
+    Returns ``(ts, ys, n_steps, n_rhs, status, event, h_next, t_last, y_last, seg_t,
+    seg_dt, seg_y, seg_F)``: the accepted steps (or the values at ``t_eval``) followed by
+    the event point if one fired, the status, the index of the guard that fired or -1,
+    the step size to try next, the end of the last accepted step and, with
+    ``keep_dense``, each step's start, length, start state and interpolant coefficients.
     """
     n = y0.shape[0]
     K = np.empty((_NSX, n))
@@ -343,15 +383,22 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atol, max_step, first_step
     f = np.empty(n)
     y_new = np.empty(n)
     f_new = np.empty(n)
-    y_try = np.empty(n)
-    f_try = np.empty(n)
+    y_ev = np.empty(n)
     g_old = np.empty(3)
     g_new = np.empty(3)
     g_tmp = np.empty(3)
+    g_tmp2 = np.empty(3)
+    any_guard = use_guards[0] or use_guards[1] or use_guards[2]
 
-    cap = 1024 if not has_t_eval else t_eval.shape[0] + 2
+    cap = 1024
     ts = np.empty(cap)
     ys = np.empty((cap, n))
+    dcap = 64 if keep_dense else 1
+    seg_t = np.empty(dcap)
+    seg_dt = np.empty(dcap)
+    seg_y = np.empty((dcap, n))
+    seg_F = np.empty((dcap, _NF, n))
+    nseg = 0
     m = 0
     ie = 0  # next t_eval index
     if not has_t_eval:
@@ -360,6 +407,8 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atol, max_step, first_step
         m = 1
     else:
         while ie < t_eval.shape[0] and t_eval[ie] <= t0:
+            if m == cap:
+                ts, ys, cap = _grow(ts, ys, m)
             ts[m] = t0
             ys[m] = y
             m += 1
@@ -368,17 +417,16 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atol, max_step, first_step
     n_rhs = 0
     n_steps = 0
     t = t0
-    _guards(rough, h, y, g_old)
+    _side_guards(rough, h, y, side, g_old)
     # a guard already violated at the start
-    for k in range(3):
-        if use_guards[k] and k != 1 and g_old[k] <= 0.0:
-            if has_t_eval:
-                ts[m] = t
-                ys[m] = y
-                m += 1
-            return (ts[:m], ys[:m], n_steps, n_rhs, LIFT_OFF if k == 0 else FELL_FLAT, k,
-                    0.0, t, y)
-    sign1 = 1.0 if g_old[1] > 0.0 else -1.0
+    k0 = _first_fired(g_old, use_guards)
+    if k0 == 0 or k0 == 2:
+        if m == 0:
+            ts[m] = t
+            ys[m] = y
+            m += 1
+        return (ts[:m], ys[:m], n_steps, n_rhs, LIFT_OFF if k0 == 0 else FELL_FLAT, k0,
+                0.0, t, y, seg_t[:0], seg_dt[:0], seg_y[:0], seg_F[:0])
     _rhs(rough, h, y, f)
     n_rhs += 1
 
@@ -389,12 +437,16 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atol, max_step, first_step
         n_rhs += 1
     status = RUNNING
     event = -1
+    if not (h_abs > 0.0) or not np.isfinite(h_abs):
+        status = FAILED  # the first step came out 0 (or not finite): nothing to integrate
+    n_here = 0
+    h_next = h_abs
     while status == RUNNING:
         if t >= t_end:
             status = COMPLETED
             break
         if n_steps >= max_steps:
-            status = FAILED
+            status = STEP_BUDGET
             break
         min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
         if h_abs > max_step:
@@ -413,6 +465,9 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atol, max_step, first_step
                 t_new = t_end
             dt = t_new - t
             h_abs = abs(dt)
+            if not dt > 0.0:
+                status = FAILED
+                break
             _step(rough, h, t, y, f, dt, K, ytmp, y_new, f_new)
             n_rhs += _NS
             finite = True
@@ -430,7 +485,7 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atol, max_step, first_step
                 h_next = h_abs * factor
                 accepted = True
             else:
-                if finite:
+                if finite and err == err:
                     h_abs *= max(_MIN_FACTOR, _SAFETY * err ** _ERR_EXP)
                 else:
                     h_abs *= _MIN_FACTOR
@@ -438,66 +493,78 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atol, max_step, first_step
         if status == FAILED:
             break
         n_steps += 1
-        # dense output of the whole step (needed unless the next requested time is its
-        # end), computed before event location reuses K and y_new
-        dense = has_t_eval and ie < t_eval.shape[0] and t_eval[ie] < t_new
+        n_here += 1
+        # dense output of the whole step: for the guards inside it, for t_eval and for
+        # keep_dense (3 more right-hand sides)
+        dense = any_guard or keep_dense or (
+            has_t_eval and ie < t_eval.shape[0] and t_eval[ie] < t_new)
         if dense:
             _dense_coefficients(rough, h, y, y_new, f_new, dt, K, ytmp, F)
             n_rhs += _NSX - _NS - 1
-        _guards(rough, h, y_new, g_new)
-        k = _triggered(g_old, g_new, use_guards)
+        _side_guards(rough, h, y_new, side, g_new)
         t_stop = t_new
-        if k >= 0:
-            # locate the earliest guard root in this step
-            best = dt
-            kbest = -1
-            for kk in range(3):
-                if not (use_guards[kk] and _fired(kk, g_old, g_new)):
-                    continue
-                xtol = 4.0 * abs(np.nextafter(t + dt, np.inf) - (t + dt))
-                dtk, nr = _locate(rough, h, t, y, f, dt, kk, sign1, K, ytmp, y_try, f_try,
-                                  g_tmp, xtol)
-                n_rhs += nr
-                if kbest == -1 or dtk < best:
-                    best = dtk
-                    kbest = kk
+        if any_guard:
+            k, x = _locate_on_dense(rough, h, y, y_new, F, side, use_guards, g_old, g_new,
+                                    ytmp, g_tmp, g_tmp2)
+            if k >= 0:
+                event = k
+                t_stop = t + x * dt
+                if x <= 0.0:
+                    t_stop = t
                     for i in range(n):
-                        y_new[i] = y_try[i]
-            event = kbest
-            t_stop = t + best
-            if event == 0:
-                status = LIFT_OFF
-            elif event == 1:
-                status = EDGE_CONTACT
-            else:
-                status = FELL_FLAT
+                        y_ev[i] = y[i]
+                else:
+                    _dense_value(y, F, x, y_ev)
+                if k == 0:
+                    status = LIFT_OFF
+                elif k == 1:
+                    status = EDGE_CONTACT
+                else:
+                    status = FELL_FLAT
+        if keep_dense:
+            if nseg == dcap:
+                dcap *= 2
+                a1 = np.empty(dcap)
+                a2 = np.empty(dcap)
+                a3 = np.empty((dcap, n))
+                a4 = np.empty((dcap, _NF, n))
+                a1[:nseg] = seg_t[:nseg]
+                a2[:nseg] = seg_dt[:nseg]
+                a3[:nseg] = seg_y[:nseg]
+                a4[:nseg] = seg_F[:nseg]
+                seg_t, seg_dt, seg_y, seg_F = a1, a2, a3, a4
+            seg_t[nseg] = t
+            seg_dt[nseg] = dt
+            seg_y[nseg] = y
+            seg_F[nseg] = F
+            nseg += 1
+        y_out = y_ev if status != RUNNING else y_new
         # output
         if has_t_eval:
             while ie < t_eval.shape[0] and t_eval[ie] <= t_stop:
+                if m + 1 >= cap:
+                    ts, ys, cap = _grow(ts, ys, m)
                 if t_eval[ie] == t_stop:
-                    ys[m] = y_new
+                    ys[m] = y_out
                 else:
-                    _dense_value(y, F, (t_eval[ie] - t) / dt, y_try)
-                    ys[m] = y_try
+                    _dense_value(y, F, (t_eval[ie] - t) / dt, ytmp)
+                    ys[m] = ytmp
                 ts[m] = t_eval[ie]
                 m += 1
                 ie += 1
             if status != RUNNING and (m == 0 or ts[m - 1] != t_stop):
+                if m == cap:
+                    ts, ys, cap = _grow(ts, ys, m)
                 ts[m] = t_stop
-                ys[m] = y_new
+                ys[m] = y_out
                 m += 1
         else:
             if m == cap:
-                cap *= 2
-                ts2 = np.empty(cap)
-                ys2 = np.empty((cap, n))
-                ts2[:m] = ts[:m]
-                ys2[:m] = ys[:m]
-                ts = ts2
-                ys = ys2
-            ts[m] = t_stop
-            ys[m] = y_new
-            m += 1
+                ts, ys, cap = _grow(ts, ys, m)
+            if not (status != RUNNING and ts[m - 1] == t_stop):
+                ts[m] = t_stop
+                ys[m] = y_out
+                m += 1
         if status != RUNNING:
             break
         t = t_new
@@ -507,9 +574,10 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atol, max_step, first_step
         for i in range(3):
             g_old[i] = g_new[i]
         h_abs = h_next
-        if t_pause <= t < t_end:
+        if t_pause <= t < t_end or n_here >= chunk_steps:
             break  # paused, status RUNNING
-    return ts[:m], ys[:m], n_steps, n_rhs, status, event, h_abs, t, y
+    return (ts[:m], ys[:m], n_steps, n_rhs, status, event, h_abs, t, y, seg_t[:nseg],
+            seg_dt[:nseg], seg_y[:nseg], seg_F[:nseg])
 
 
 # ------------------------------------------------------------------ stale-cache guard
@@ -517,7 +585,8 @@ _DISPATCHERS = ("_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rh
                 "_smooth_rhs", "_reduced_state", "_reduced_rhs", "_rhs", "_normal_force",
                 "_guards", "_step",
                 "_dense_coefficients", "_dense_value", "_error_norm", "_rms", "initial_step",
-                "_fired", "_triggered", "_guard_value", "_locate", "integrate")
+                "_side_normal_force", "_side_guards", "_first_fired", "_guard_root",
+                "_locate_on_dense", "_grow", "integrate")
 
 
 def rhs_matches_kernels() -> bool:

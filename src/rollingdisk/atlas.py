@@ -294,15 +294,12 @@ def _floats(d):
 
 
 def _motion_record(motion, stab, traj, kick) -> dict:
-    from ._simulate import growth_rate, oscillation_frequency
+    from .measure import compare_with_theory
     from .plotting import trajectory_series
 
     theta = trajectory_series(traj, "theta")
     E = trajectory_series(traj, "E")
-    if stab.stable:
-        measured = oscillation_frequency(traj)
-    else:
-        measured = growth_rate(traj, theta_ref=motion.theta0, max_amplitude=1e-3)
+    measured = compare_with_theory(traj, stab).measured  # the CLI's rule for the linear range
     return {
         "theta0": float(motion.theta0), "Omega0": float(motion.Omega0),
         "omega20": float(motion.omega20), "omega30": float(motion.omega30),

@@ -11,6 +11,7 @@ import math
 import sys
 from collections.abc import Sequence
 
+from ._files import Terminated, terminate_as_exception
 from .atlas import DEFAULT_H  # the default disk of the picture commands
 from .errors import ParameterError
 
@@ -243,7 +244,10 @@ def _add_simulate(sub) -> None:
     p.add_argument("--rtol", type=float, default=None, help="relative tolerance")
     p.add_argument("--atol", type=float, default=None, help="absolute tolerance")
     p.add_argument("--method", choices=("dop853", "scipy"), default="dop853",
-                   help="compiled DOP853 (default) or scipy's solve_ivp")
+                   help="compiled DOP853 (default) or scipy's DOP853")
+    p.add_argument("--max-steps", dest="max_steps", type=_positive_int, default=2_000_000,
+                   help="step budget: stop with status step-budget after this many steps "
+                   "(default 2000000, about 20 s)")
     p.add_argument("--out", type=str, default=None, metavar="FILE.csv",
                    help="write the trajectory as CSV (t, X_C, Y_C, psi, theta, phi, omega1, "
                    "omega2, omega3, X_P, Y_P, F_x, F_y, F_z, E)")
@@ -312,89 +316,122 @@ class _ProgressBar:
             self.stream.flush()
 
 
-def _write_csv_atomic(path: str, columns: dict) -> None:
-    import os
-    import tempfile
+class _RunSummary:
+    """A ``sink`` for simulate(): streams the CSV (if a file is open), keeps running
+    measures (energy drift, theta range) over the whole run and the first ``keep`` points
+    for the frequency and growth measurements, so that memory stays flat."""
 
-    import numpy as np
+    def __init__(self, disk, ground, csv=None, keep: int = 200_000):
+        self.disk, self.ground, self.csv, self.keep = disk, ground, csv, keep
+        self.t, self.y = [], []
+        self.n_kept = 0
+        self.E0 = None
+        self.dE = 0.0
+        self.theta_min, self.theta_max = math.inf, -math.inf
+        self.header = True
 
-    target = os.path.abspath(path)
-    folder = os.path.dirname(target)
-    fd, tmp = tempfile.mkstemp(prefix=".rollingdisk-", suffix=".csv.tmp", dir=folder)
-    try:
-        with os.fdopen(fd, "w", newline="") as fh:
-            data = np.column_stack(list(columns.values()))
-            np.savetxt(fh, data, delimiter=",", header=",".join(columns), comments="",
+    def __call__(self, t, y) -> None:
+        import numpy as np
+
+        from .trajectory import Trajectory
+
+        part = Trajectory(disk=self.disk, ground=self.ground, t=t, y=y, status="completed",
+                          message="", n_steps=0, n_rhs=0)
+        E = part.E
+        if self.E0 is None:
+            self.E0 = float(E[0])
+        self.dE = max(self.dE, float(np.max(np.abs(E - self.E0))))
+        self.theta_min = min(self.theta_min, float(np.min(part.theta)))
+        self.theta_max = max(self.theta_max, float(np.max(part.theta)))
+        if self.n_kept < self.keep:
+            k = min(len(t), self.keep - self.n_kept)
+            self.t.append(np.array(t[:k]))
+            self.y.append(np.array(y[:, :k]))
+            self.n_kept += k
+        if self.csv is not None:
+            cols = part.as_columns()
+            np.savetxt(self.csv, np.column_stack(list(cols.values())), delimiter=",",
+                       header=",".join(cols) if self.header else "", comments="",
                        fmt="%.17g")
-        os.replace(tmp, target)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
+            self.header = False
+
+    def kept(self, traj):
+        """``traj`` with the points kept (the whole run if it fitted)."""
+        import dataclasses
+
+        import numpy as np
+
+        return dataclasses.replace(traj, t=np.concatenate(self.t),
+                                   y=np.concatenate(self.y, axis=1))
+
+    def energy_drift(self) -> float:
+        return self.dE / max(abs(self.E0), 2.2250738585072014e-308)
+
+
+def _finite_or_none(value):
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
 
 
 def _run_simulate(args) -> int:
+    import contextlib
     import json
     import threading
 
-    import numpy as np
-
-    from ._simulate import (
-        DEFAULT_ATOL,
-        DEFAULT_RTOL,
-        energy_drift,
-        growth_rate,
-        oscillation_frequency,
-        simulate,
-        simulate_steady,
-    )
+    from ._files import atomic_file, check_writable
+    from ._simulate import DEFAULT_ATOL, DEFAULT_RTOL, simulate, simulate_steady
     from ._stability import stability
     from .disk import Disk
+    from .measure import compare_with_theory, oscillation_frequency
 
     disk = Disk(h=args.h)
     motion = _simulate_motion(args)
     if args.out is not None:
         _check_out_file(args.out, "simulate")
+        check_writable(args.out, name="--out")
+    if not (math.isfinite(args.t_end) and args.t_end > 0):
+        raise ParameterError(f"t_end must be a finite number > 0, got {args.t_end!r}")
     options = dict(rtol=DEFAULT_RTOL if args.rtol is None else args.rtol,
-                   atol=DEFAULT_ATOL if args.atol is None else args.atol, method=args.method)
-    bar = None if args.json or args.method != "dop853" else _ProgressBar(sys.stderr)
+                   atol=DEFAULT_ATOL if args.atol is None else args.atol, method=args.method,
+                   max_steps=args.max_steps)
+    if motion is None:
+        y0 = _parse_state(args.state, args.ground)
+        from .equations import state_index
+
+        y0[state_index(args.ground, "theta")] += args.perturb
+        y0[state_index(args.ground, "omega1")] += args.kick
+    bar = None if args.json else _ProgressBar(sys.stderr)
     notice = None
     if bar is not None:
         options["progress"] = bar
-        # the first run after an install compiles the integrator (about 20 s): say so
-        notice = threading.Timer(2.0, lambda: bar.shown or print(
-            "compiling the integrator (first use only; cached afterwards) ...",
-            file=sys.stderr, flush=True))
-        notice.daemon = True
-        notice.start()
+        if args.method == "dop853":
+            # the first run after an install compiles the integrator (about 20 s): say so
+            notice = threading.Timer(2.0, lambda: bar.shown or print(
+                "compiling the integrator (first use only; cached afterwards) ...",
+                file=sys.stderr, flush=True))
+            notice.daemon = True
+            notice.start()
+    csv_cm = (atomic_file(args.out, "w", newline="") if args.out is not None
+              else contextlib.nullcontext())
     try:
-        if motion is not None:
-            traj = simulate_steady(motion, args.t_end, perturb=args.perturb, kick=args.kick,
-                                   **options)
-        else:
-            y0 = _parse_state(args.state, args.ground)
-            from .equations import state_index
-
-            y0[state_index(args.ground, "theta")] += args.perturb
-            y0[state_index(args.ground, "omega1")] += args.kick
-            if not (math.isfinite(args.t_end) and args.t_end > 0):
-                raise ParameterError(f"t_end must be a finite number > 0, got {args.t_end!r}")
-            traj = simulate(disk, args.ground, y0, (0.0, args.t_end), **options)
+        with csv_cm as csv:
+            summary = _RunSummary(disk, args.ground, csv)
+            options["sink"] = summary
+            if motion is not None:
+                traj = simulate_steady(motion, args.t_end, perturb=args.perturb,
+                                       kick=args.kick, **options)
+            else:
+                traj = simulate(disk, args.ground, (0.0, args.t_end), y0, **options)
     finally:
         if notice is not None:
             notice.cancel()
         if bar is not None:
             bar.close()
+    kept = summary.kept(traj)
     stab = None if motion is None else stability(motion)
     varpi2 = None if stab is None else stab.varpi2
-    freq = oscillation_frequency(traj)
-    # the linear regime of an unstable start: up to 1e3 times the perturbation (>= 1e-4;
-    # the nonlinear bias is about max_amplitude, relatively)
-    growth = growth_rate(traj, max_amplitude=max(1e-4, 1e3 * abs(args.perturb))) \
-        if varpi2 is not None and varpi2 < 0 else None
-    theta = traj.theta
+    theory = None if stab is None else compare_with_theory(kept, stab)
     record = {
         "status": traj.status,
         "message": traj.message,
@@ -403,21 +440,22 @@ def _run_simulate(args) -> int:
         "t_end": float(traj.t[-1]),
         "n_steps": traj.n_steps,
         "n_rhs": traj.n_rhs,
-        "energy_drift": energy_drift(traj),
-        "theta_min": float(np.min(theta)),
-        "theta_max": float(np.max(theta)),
-        "theta_frequency": freq,
+        "energy_drift": summary.energy_drift(),
+        "theta_min": summary.theta_min,
+        "theta_max": summary.theta_max,
+        "theta_frequency": oscillation_frequency(kept),
         "varpi": None if stab is None else stab.as_dict()["varpi"],
         "varpi2": varpi2,
-        "growth_rate": growth,
+        "growth_rate": theory.measured if theory is not None and theory.kind == "growth"
+        else None,
         "wall_time_s": traj.wall_time,
         "method": traj.method,
     }
+    record = {k: _finite_or_none(v) for k, v in record.items()}
     if args.out is not None:
-        _write_csv_atomic(args.out, traj.as_columns())
         record["out"] = args.out
     if args.json:
-        print(json.dumps(record, indent=2))
+        print(json.dumps(record, indent=2, allow_nan=False))
     else:
         print(traj.message)
         for key in ("t_end", "n_steps", "energy_drift", "theta_min", "theta_max",
@@ -566,7 +604,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         if not getattr(args, "handler", None):
             parser.print_help(sys.stderr)
             return 2
-        return int(args.handler(args) or 0)
+        with terminate_as_exception():
+            return int(args.handler(args) or 0)
+    except Terminated:
+        print("rollingdisk: terminated", file=sys.stderr)
+        return 143
     except CLIError as exc:
         print(str(exc), file=sys.stderr)
         return 2

@@ -31,7 +31,7 @@ from collections.abc import Callable
 import numpy as np
 
 from .disk import Disk, check_ground
-from .errors import ParameterError
+from .errors import ParameterError, ParameterTypeError
 
 __all__ = [
     "ROUGH_STATE",
@@ -162,6 +162,20 @@ def _normal_force(rough, h, y):
     return 1.0 + z_P * w1 * w1 - y_P * d1  # eq. (11)
 
 
+def _side_normal_force(rough, h, y, side):
+    """``F_z`` of eq. (11) with ``h~ = h side`` whatever the sign of ``theta``.
+
+    The normal force of the motion on the side ``side = sgn(theta)`` it started on,
+    continued across ``theta = 0`` (where ``h~ = h sgn(theta)`` jumps): the lift-off guard,
+    which must not fire at that jump (an edge contact, not a lift-off).  The kernels use
+    ``h`` only through ``h~`` and ``h^2``, so ``-h`` on the other side gives ``h~ = h side``.
+    """
+    theta = _reduced_state(rough, y)[0]
+    if theta * side < 0.0:
+        return _normal_force(rough, -h, y)
+    return _normal_force(rough, h, y)
+
+
 def _velocity_of_C(rough, h, y):
     """``(v_Cx, v_Cy, v_Cz)`` in Cxyz (eqs. 1, 7, 37)."""
     theta, w1, w2, w3 = _reduced_state(rough, y)
@@ -179,14 +193,29 @@ def _velocity_of_C(rough, h, y):
 # ---------------------------------------------------------------------------------------
 # public API
 # ---------------------------------------------------------------------------------------
+def _check_disk(disk) -> Disk:
+    if not isinstance(disk, Disk):
+        raise ParameterTypeError(f"disk must be a rollingdisk.Disk, got {type(disk).__name__}"
+                                 f" {disk!r}")
+    return disk
+
+
+def _shape_error(ground: str, y) -> ParameterError:
+    names = state_names(ground)
+    return ParameterError(f"y must have {len(names)} components on {ground} ground "
+                          f"({', '.join(names)}), got {np.shape(y)}")
+
+
 def _as_state(ground: str, y) -> np.ndarray:
-    y = np.asarray(y, dtype=float)
-    n = len(state_names(ground))
-    if y.shape[:1] != (n,):
-        raise ParameterError(
-            f"y must have {n} components on {ground} ground ({', '.join(state_names(ground))}),"
-            f" got shape {y.shape}"
-        )
+    """``y`` as a float array of states: right length, finite (never a silent NaN)."""
+    try:
+        y = np.asarray(y, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterTypeError(f"y must be an array of real numbers, got {y!r}") from None
+    if y.shape[:1] != (len(state_names(ground)),):
+        raise _shape_error(ground, y)
+    if not np.all(np.isfinite(y)):
+        raise ParameterError("y must be finite (no NaN or infinity)")
     return y
 
 
@@ -215,10 +244,15 @@ def equations_of_motion(disk: Disk, ground: str) -> Callable[[float, np.ndarray]
     >>> bool(sol.success)
     True
     """
-    h = disk.h
-    kernel = _rough_rhs if check_ground(ground) == "rough" else _smooth_rhs
+    h = _check_disk(disk).h
+    ground = check_ground(ground)
+    kernel = _rough_rhs if ground == "rough" else _smooth_rhs
+    n = len(state_names(ground))
 
     def f(t, y):
+        y = np.asarray(y, dtype=float)  # a hot path: the shape only is checked per call
+        if y.shape[:1] != (n,):
+            raise _shape_error(ground, y)
         return np.array(kernel(h, y))
 
     f.__doc__ = f"dy/dt on {ground} ground for h = {h:g}."
@@ -246,7 +280,7 @@ def omega_dot(disk: Disk, ground: str, theta, omega1, omega2, omega3):
     inclination and the angular velocity; positions and ``psi, phi`` do not enter.
     """
     kernel = _rough_omega_dot if check_ground(ground) == "rough" else _smooth_omega_dot
-    return kernel(disk.h, theta, omega1, omega2, omega3)
+    return kernel(_check_disk(disk).h, theta, omega1, omega2, omega3)
 
 
 def velocity_of_C(disk: Disk, ground: str, y):
@@ -257,7 +291,7 @@ def velocity_of_C(disk: Disk, ground: str, y):
     ``(V_X, V_Y)`` in the state.  ``v_Cz = -omega1 y_P`` (eq. 7).
     """
     y = _as_state(ground, y)
-    return _velocity_of_C(ground == "rough", disk.h, y)
+    return _velocity_of_C(ground == "rough", _check_disk(disk).h, y)
 
 
 def contact_force(disk: Disk, ground: str, y):
@@ -278,7 +312,7 @@ def contact_force(disk: Disk, ground: str, y):
         while ``F_z > 0``.
     """
     y = _as_state(ground, y)
-    h = disk.h
+    h = _check_disk(disk).h
     rough = ground == "rough"
     F_z = _normal_force(rough, h, y)  # eq. (11)
     if not rough:
@@ -301,7 +335,7 @@ def energy(disk: Disk, ground: str, y):
     ``Z_C = -z_P`` (eq. 7), so a disk standing upright at rest (h = 0) has ``E = 1``.
     """
     y = _as_state(ground, y)
-    h = disk.h
+    h = _check_disk(disk).h
     rough = ground == "rough"
     theta, w1, w2, w3 = _reduced_state(rough, y)
     z_P = _geometry(h, theta)[5]
@@ -321,5 +355,5 @@ def contact_point(disk: Disk, ground: str, y):
     rough = ground == "rough"
     X_C, Y_C = y[0], y[1]
     psi, theta = (y[2], y[3]) if rough else (y[4], y[5])
-    y_P = _geometry(disk.h, theta)[4]
+    y_P = _geometry(_check_disk(disk).h, theta)[4]
     return X_C - y_P * np.sin(psi), Y_C + y_P * np.cos(psi)  # eq. (5)

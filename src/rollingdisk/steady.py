@@ -59,8 +59,9 @@ class SteadyMotion:
     Attributes
     ----------
     ground : {"rough", "smooth"}
-    h : float
-        Half-thickness of the disk (units of the radius ``a``).
+    disk : Disk
+        The disk (as given to :func:`steady_motion` / :func:`straight_line`, with its
+        physical scale if it has one); ``h`` is its half-thickness (units of the radius).
     motion : {"straight", "circle", "spin"}
         ``"spin"``: C and P both at rest (``r_C = r_P = 0``).
     theta0 : float
@@ -89,7 +90,7 @@ class SteadyMotion:
     """
 
     ground: str
-    h: float
+    disk: Disk
     motion: str
     theta0: float
     Omega0: float
@@ -110,9 +111,9 @@ class SteadyMotion:
         return abs(self.F_y)
 
     @property
-    def disk(self) -> Disk:
-        """The (dimensionless) disk of this motion."""
-        return Disk(h=self.h)
+    def h(self) -> float:
+        """Half-thickness of the disk, ``disk.h`` (units of the radius ``a``)."""
+        return self.disk.h
 
     @property
     def h_tilde(self) -> float:
@@ -143,10 +144,13 @@ class SteadyMotion:
                          self.omega20, self.omega30])
 
     def as_dict(self) -> dict:
-        """Fields as a plain dict (floats; ``nan`` radii of straight lines become ``None``)."""
+        """Fields as a plain dict (floats; ``nan`` radii of straight lines become ``None``;
+        the disk as its half-thickness ``h``)."""
         out = {}
         for name in self.__dataclass_fields__:
             v = getattr(self, name)
+            if name == "disk":
+                name, v = "h", v.h
             if isinstance(v, float) and not math.isfinite(v):
                 v = None
             out[name] = v
@@ -224,7 +228,7 @@ def _build(disk: Disk, ground: str, theta0: float, Omega0: float) -> SteadyMotio
         r_C = r_P = 0.0
     else:
         motion = "circle"
-    return SteadyMotion(ground=ground, h=h, motion=motion, theta0=theta0, Omega0=Omega0,
+    return SteadyMotion(ground=ground, disk=disk, motion=motion, theta0=theta0, Omega0=Omega0,
                         omega0=omega0, omega20=omega20, omega30=omega30, r_C=r_C, r_P=r_P,
                         F_y=F_y, v_C=abs(v_Cx0), v_Cx0=v_Cx0, v_Cy0=0.0, y_P0=y_P)
 
@@ -397,7 +401,7 @@ def straight_line(disk: Disk, ground: str, omega0: float, *, v_Cx0: float | None
             "on rough ground the contact point does not slip, so a straight line has "
             f"v_Cx0 = omega0 = {omega0:.6g} and v_Cy0 = 0 (eq. 18)")
     theta0 = lean * disk.static_equilibrium_theta  # y_P0 = 0, eq. (16)
-    return SteadyMotion(ground=ground, h=disk.h, motion="straight", theta0=theta0, Omega0=0.0,
+    return SteadyMotion(ground=ground, disk=disk, motion="straight", theta0=theta0, Omega0=0.0,
                         omega0=omega0, omega20=omega0, omega30=0.0, r_C=math.nan,
                         r_P=math.nan, F_y=0.0, v_C=math.hypot(v_Cx0, v_Cy0), v_Cx0=v_Cx0,
                         v_Cy0=v_Cy0, y_P0=0.0)

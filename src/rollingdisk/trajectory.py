@@ -1,0 +1,172 @@
+"""The result of a simulation: :class:`Trajectory`, a frozen record of a motion.
+
+Kept apart from the integrators (:mod:`rollingdisk._simulate`) and the measurements
+(:mod:`rollingdisk.measure`): a trajectory is data (times, states, how the run ended) plus
+the quantities derived from the states by :mod:`rollingdisk.equations` (contact point,
+contact force, energy).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import numpy as np
+
+from .disk import Disk
+from .equations import contact_force, contact_point, energy, state_index
+
+__all__ = ["Trajectory"]
+
+
+@dataclass(frozen=True, eq=False)
+class Trajectory:
+    """A simulated motion of the disk (dimensionless units, m = a = g = 1).
+
+    Attributes
+    ----------
+    disk : Disk
+        The disk simulated.
+    ground : {"rough", "smooth"}
+        The ground.
+    t : ndarray, shape (n,)
+        Times (time unit ``sqrt(a/g)``).  The last one is the event time if a guard fired.
+    y : ndarray, shape (n_state, n)
+        States, laid out as in :data:`rollingdisk.equations.ROUGH_STATE` /
+        :data:`~rollingdisk.equations.SMOOTH_STATE`.
+    status : str
+        ``"completed"`` (reached the end of ``t_span``, or stopped by a terminal user
+        event), ``"lift-off"`` (``F_z`` reached 0, eq. 11), ``"edge-contact"`` (``theta``
+        reached 0 with ``h > 0``), ``"fell-flat"`` (``|theta|`` reached ``pi/2``),
+        ``"step-budget"`` (``max_steps`` steps taken before the end) or ``"failed"`` (the
+        integrator gave up; see ``message``).  See :mod:`rollingdisk.events`.
+    message : str
+        What happened, in words.
+    n_steps, n_rhs : int
+        Accepted integration steps and right-hand-side evaluations.
+    method : str
+        ``"dop853"`` (compiled) or ``"scipy"``.
+    t_event : float or None
+        Time of the guard event, if one fired.
+    wall_time : float
+        Seconds spent integrating (not counting compilation or post-processing).
+    theta_ref : float or None
+        The steady inclination ``theta0`` when started from a steady motion.
+    motion : object or None
+        The :class:`~rollingdisk.steady.SteadyMotion` it was started from, if any.
+    t_events, y_events : tuple
+        For user events: per event, the times and states where it occurred.
+    sol : callable or None
+        With ``simulate(..., dense_output=True)``: ``sol(t)``, the DOP853 interpolant of
+        the whole run (as ``solve_ivp``'s ``sol``), for ``t`` within ``[t[0], t[-1]]``.
+    """
+
+    disk: Disk
+    ground: str
+    t: np.ndarray
+    y: np.ndarray
+    status: str
+    message: str
+    n_steps: int
+    n_rhs: int
+    method: str = "dop853"
+    t_event: float | None = None
+    wall_time: float = math.nan
+    theta_ref: float | None = None
+    motion: object = None
+    t_events: tuple = field(default=())
+    y_events: tuple = field(default=())
+    sol: object = None
+
+    def __post_init__(self):
+        for name in ("t", "y"):
+            a = np.array(getattr(self, name), dtype=float)
+            a.setflags(write=False)
+            object.__setattr__(self, name, a)
+
+    def __repr__(self) -> str:
+        return (f"Trajectory(ground={self.ground!r}, h={self.disk.h:g}, t=[{self.t[0]:g}, "
+                f"{self.t[-1]:g}], n={self.t.size}, status={self.status!r}, "
+                f"n_steps={self.n_steps})")
+
+    @property
+    def success(self) -> bool:
+        """True unless the integrator failed or ran out of steps (guard events count as
+        success)."""
+        return self.status not in ("failed", "step-budget")
+
+    def component(self, name: str) -> np.ndarray:
+        """The state component ``name`` (e.g. ``"theta"``) along the trajectory."""
+        return self.y[state_index(self.ground, name)]
+
+    # state components, named as in the paper
+    X_C = property(lambda self: self.component("X_C"), doc="X_C, centre C in OXYZ.")
+    Y_C = property(lambda self: self.component("Y_C"), doc="Y_C, centre C in OXYZ.")
+    psi = property(lambda self: self.component("psi"), doc="Spin angle psi.")
+    theta = property(lambda self: self.component("theta"), doc="Inclination theta.")
+    phi = property(lambda self: self.component("phi"), doc="Rotation angle phi.")
+    omega1 = property(lambda self: self.component("omega1"), doc="omega1 (eq. 2).")
+    omega2 = property(lambda self: self.component("omega2"), doc="omega2 (eq. 3).")
+    omega3 = property(lambda self: self.component("omega3"), doc="omega3 (eq. 3).")
+
+    @property
+    def V_X(self) -> np.ndarray:
+        """V_X, inertial velocity of C (smooth ground only; constant there)."""
+        return self.component("V_X")
+
+    @property
+    def V_Y(self) -> np.ndarray:
+        """V_Y, inertial velocity of C (smooth ground only; constant there)."""
+        return self.component("V_Y")
+
+    @cached_property
+    def _P(self):
+        return contact_point(self.disk, self.ground, self.y)
+
+    @cached_property
+    def _F(self):
+        return contact_force(self.disk, self.ground, self.y)
+
+    @property
+    def X_P(self) -> np.ndarray:
+        """X_P, contact point on the plane (eq. 5)."""
+        return np.asarray(self._P[0])
+
+    @property
+    def Y_P(self) -> np.ndarray:
+        """Y_P, contact point on the plane (eq. 5)."""
+        return np.asarray(self._P[1])
+
+    @property
+    def F_x(self) -> np.ndarray:
+        """F_x, contact force in Cxyz, units of m g (eq. 8)."""
+        return np.asarray(self._F[0])
+
+    @property
+    def F_y(self) -> np.ndarray:
+        """F_y, contact force in Cxyz, units of m g (eq. 8)."""
+        return np.asarray(self._F[1])
+
+    @property
+    def F_z(self) -> np.ndarray:
+        """F_z, normal force, units of m g (eq. 11)."""
+        return np.asarray(self._F[2])
+
+    @cached_property
+    def E(self) -> np.ndarray:
+        """Total mechanical energy, units of m g a (eq. 13)."""
+        return np.asarray(energy(self.disk, self.ground, self.y))
+
+    def as_columns(self) -> dict[str, np.ndarray]:
+        """Columns ``t, X_C, Y_C, psi, theta, phi, omega1, omega2, omega3, X_P, Y_P, F_x,
+        F_y, F_z, E`` (the CSV layout of ``rollingdisk simulate --out``), and on smooth
+        ground ``V_X, V_Y`` after them, so that a smooth run can be restarted from a row."""
+        cols = {"t": self.t, "X_C": self.X_C, "Y_C": self.Y_C, "psi": self.psi,
+                "theta": self.theta, "phi": self.phi, "omega1": self.omega1,
+                "omega2": self.omega2, "omega3": self.omega3, "X_P": self.X_P,
+                "Y_P": self.Y_P, "F_x": self.F_x, "F_y": self.F_y, "F_z": self.F_z,
+                "E": self.E}
+        if self.ground == "smooth":
+            cols.update(V_X=self.V_X, V_Y=self.V_Y)
+        return cols
