@@ -123,6 +123,10 @@ def check_replaceable(path, names, *, name: str = "out") -> Path:
         If the folder exists and holds anything but files named in ``names``.
     """
     target = check_writable(path, name=name, folder=True)
+    cwd = os.path.abspath(os.getcwd())
+    if os.path.commonpath([cwd, target]) == str(target):
+        raise ParameterError(f"{name}: {target} is the current folder or contains it; give a "
+                             "folder of its own (e.g. a new name)")
     if target.is_dir():
         allowed = set(names)
         try:

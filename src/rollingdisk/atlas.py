@@ -84,9 +84,16 @@ class _Progress:
         if self.enabled:
             print(f"[{self.k}/{self.n}] {name} ...", end="", file=self.stream, flush=True)
 
+    def abort(self):
+        """End the open progress line (the run was interrupted or failed)."""
+        if self.enabled and getattr(self, "_t", None) is not None:
+            print(file=self.stream, flush=True)
+        self._t = None
+
     def done(self, note: str = ""):
         dt = time.perf_counter() - self._t
         self.timings[self._name] = dt
+        self._t = None
         if self.enabled:
             extra = f" ({note})" if note else ""
             print(f" {dt:.1f} s{extra}", file=self.stream, flush=True)
@@ -169,8 +176,12 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
     target = check_replaceable(out_dir, ATLAS_FILES, name="out_dir")
     chosen = example_motions(h)  # before any work: fails for a disk with no unstable circle
     pr = _Progress(8, stream=stream, enabled=bool(progress))
-    with atomic_dir(target) as out:
-        files, motions = _write_atlas(h, out, chosen, quick=bool(quick), pr=pr)
+    try:
+        with atomic_dir(target) as out:
+            files, motions = _write_atlas(h, out, chosen, quick=bool(quick), pr=pr)
+    except BaseException:
+        pr.abort()  # the message that follows gets a line of its own
+        raise
     index = target / "index.html"
     if progress:
         print(f"atlas written to {index} in {pr.total():.1f} s", file=pr.stream, flush=True)
