@@ -325,3 +325,21 @@ def test_a_signal_leaves_nothing(tmp_path, argv, sig, rc, word):
     assert err.strip().splitlines()[-1] == f"rollingdisk: {word}", err
     assert "Traceback" not in err
     assert os.listdir(tmp_path) == []
+
+
+@pytest.mark.slow  # two quick atlases at once, about 20 s
+def test_two_atlases_into_one_folder_end_consistent(tmp_path):
+    """Two runs into the same folder: the one that finishes last leaves its whole atlas,
+    so index.html and thresholds.json describe the same disk."""
+    env = dict(os.environ, PYTHONPATH=SRC, MPLBACKEND="Agg")
+    procs = [subprocess.Popen([sys.executable, "-m", "rollingdisk", "atlas", "--quick",
+                               "--quiet", "--h", h, "--out", "at"], cwd=tmp_path, env=env,
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+             for h in ("0.17", "0.4")]
+    for proc in procs:
+        _, err = proc.communicate(timeout=300)
+        assert proc.returncode == 0, err
+    h = json.loads((tmp_path / "at" / "thresholds.json").read_text())["h"]
+    html = (tmp_path / "at" / "index.html").read_text(encoding="utf-8")
+    assert f"h = {h:.4g}</title>" in html
+    assert sorted(os.listdir(tmp_path)) == ["at"]  # no temporary folder left
