@@ -44,7 +44,17 @@ PIXEL_BUDGET = 2.5e8
 
 
 def body_frame(psi: float, theta: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Unit vectors ``xi, eta, zeta`` of the frame C xi eta zeta in OXYZ (Figure 1)."""
+    """Unit vectors ``xi, eta, zeta`` of the frame C xi eta zeta in OXYZ (Figure 1).
+
+    Parameters
+    ----------
+    psi, theta : float
+        Spin and inclination angles [rad].
+
+    Returns
+    -------
+    (xi, eta, zeta) : tuple of (3,) ndarray
+    """
     sp, cp = math.sin(psi), math.cos(psi)
     st, ct = math.sin(theta), math.cos(theta)
     xi = np.array([cp, sp, 0.0])
@@ -81,7 +91,21 @@ class DiskPose:
 
 def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: float,
               n: int = 48) -> DiskPose:
-    """Positions of the drawn disk for one state (eqs. 4, 5, 7)."""
+    """Positions of the drawn disk for one state (eqs. 4, 5, 7).
+
+    Parameters
+    ----------
+    h : float
+        Half-thickness.
+    X_C, Y_C, psi, theta, phi : float
+        The centre C on the plane and the three angles [rad].
+    n : int
+        Points on each rim circle.
+
+    Returns
+    -------
+    DiskPose
+    """
     h = check_h(h)
     xi, eta, zeta = body_frame(psi, theta)
     _, _, _, _, y_P, z_P = _geometry(h, theta)
@@ -101,7 +125,21 @@ def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: f
 
 
 def poses(traj, n_frames: int = 60, *, n: int = 48) -> tuple[np.ndarray, list[DiskPose]]:
-    """Frame times (uniform in ``t``) and the disk poses of a trajectory at them."""
+    """Frame times (uniform in ``t``) and the disk poses of a trajectory at them.
+
+    Parameters
+    ----------
+    traj : Trajectory
+        Or any object with ``disk, ground, t, y``.
+    n_frames : int
+        Number of frames (at least 2).
+    n : int
+        Points on each rim circle.
+
+    Returns
+    -------
+    (times, poses) : (ndarray, list of DiskPose)
+    """
     t = np.asarray(traj.t, float)
     tf = np.linspace(t[0], t[-1], max(2, int(n_frames)))
     s = {k: np.interp(tf, t, trajectory_series(traj, k))
@@ -131,6 +169,19 @@ def draw_disk(ax, pose: DiskPose, *, face_color="#9ecae1", side_color="#4a7fb0",
     Everything on the plane gets a lower ``zorder`` than the disk; with
     ``ax.computed_zorder = False`` (as :func:`animate` sets) the disk, which never goes
     below the plane, is then always painted over them.
+
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.Axes3D
+    pose : DiskPose
+    face_color, side_color, marker_color : color
+    shadow : bool
+        Draw the shadow on ``Z = 0``.
+
+    Returns
+    -------
+    dict
+        The artists, by role (``"body"``, ``"contact"``, ``"shadow"``).
     """
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 

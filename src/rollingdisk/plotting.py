@@ -7,6 +7,10 @@ motions exist, which are stable) is computed in :mod:`rollingdisk.regions`.  mat
 imported only when a plot function is called; every function takes ``ax=None`` (a new
 figure is made when it is ``None``), returns what it drew and never calls ``plt.show()``.
 
+About 600 lines on purpose: one function per kind of map or trajectory plot, sharing the
+class colours, labels and file helpers at the top (split by plot kind, they would be
+scattered over several modules).
+
 Map functions return a :class:`MapPlot`: the axes, the grid, the values on the grid (a
 class code of :mod:`rollingdisk.regions` or ``varpi2``) and the artists.  Class codes are
 
