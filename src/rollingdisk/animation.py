@@ -293,6 +293,17 @@ def writer_for(path, fps: int):
     raise ParameterError(f"out must end in .gif or .mp4, got {str(path)!r}")
 
 
+def _abandon(writer) -> None:
+    """Stop a movie writer without finishing its file (ffmpeg: end the process)."""
+    proc = getattr(writer, "_proc", None)
+    if proc is not None:
+        import contextlib
+
+        with contextlib.suppress(Exception):
+            proc.kill()
+            proc.wait()
+
+
 def _check_trajectory(traj) -> None:
     if not all(hasattr(traj, name) for name in ("disk", "ground", "t", "y")):
         raise ParameterTypeError(f"traj must be a Trajectory (disk, ground, t, y), got "
@@ -350,31 +361,41 @@ def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
     fig = Figure(figsize=size)
     ax = fig.add_subplot(1, 1, 1, projection="3d")
     head = title if title is not None else f"{traj.ground} ground, h = {traj.disk.h:.4g}"
-    with atomic_file(out, mode=None) as tmp, writer.saving(fig, str(tmp), dpi):
-        for i, (ti, pose) in enumerate(zip(tf, frames, strict=True)):
-            ax.cla()
-            ax.set_autoscale_on(False)  # fixed limits: no autoscaling from the drawn parts
-            ax.set_xlim(x0, x1)
-            ax.set_ylim(y0, y1)
-            ax.set_zlim(z0, z1)
-            # the plane Z = 0 is the bottom pane of the axes (zlim starts at 0)
-            ax.zaxis.set_pane_color((0.85, 0.85, 0.85, 1.0))
-            k = int(np.searchsorted(t, ti, side="right"))
-            ax.computed_zorder = False  # plane first, then the disk (see draw_disk)
-            ax.plot(XP[:k], YP[:k], 0.0 * XP[:k], color="tab:red", lw=1.0, zorder=1.2)
-            ax.plot(XC[:k], YC[:k], 0.0 * XC[:k], color="tab:blue", lw=0.7, ls="--",
-                    zorder=1.2)
-            draw_disk(ax, pose)
-            ax.set_xlim(x0, x1)
-            ax.set_ylim(y0, y1)
-            ax.set_zlim(z0, z1)
-            ax.set_box_aspect((x1 - x0, y1 - y0, z1 - z0))
-            ax.set_xlabel("X")
-            ax.set_ylabel("Y")
-            ax.set_zlabel("Z")
-            ax.view_init(elev=28, azim=-60)
-            ax.set_title(f"{head}   t = {ti:6.2f}", fontsize=9)
-            writer.grab_frame()
-            if progress:
-                progress(i + 1, len(tf))
+    import matplotlib as mpl
+
+    # not writer.saving(): it finishes the file even when interrupted, and an exception in
+    # that clean-up would hide the interruption; here an unfinished file is just dropped
+    with atomic_file(out, mode=None) as tmp, mpl.rc_context({"savefig.bbox": None}):
+        writer.setup(fig, str(tmp), dpi)
+        try:
+            for i, (ti, pose) in enumerate(zip(tf, frames, strict=True)):
+                ax.cla()
+                ax.set_autoscale_on(False)  # fixed limits: no autoscaling from the drawn parts
+                ax.set_xlim(x0, x1)
+                ax.set_ylim(y0, y1)
+                ax.set_zlim(z0, z1)
+                # the plane Z = 0 is the bottom pane of the axes (zlim starts at 0)
+                ax.zaxis.set_pane_color((0.85, 0.85, 0.85, 1.0))
+                k = int(np.searchsorted(t, ti, side="right"))
+                ax.computed_zorder = False  # plane first, then the disk (see draw_disk)
+                ax.plot(XP[:k], YP[:k], 0.0 * XP[:k], color="tab:red", lw=1.0, zorder=1.2)
+                ax.plot(XC[:k], YC[:k], 0.0 * XC[:k], color="tab:blue", lw=0.7, ls="--",
+                        zorder=1.2)
+                draw_disk(ax, pose)
+                ax.set_xlim(x0, x1)
+                ax.set_ylim(y0, y1)
+                ax.set_zlim(z0, z1)
+                ax.set_box_aspect((x1 - x0, y1 - y0, z1 - z0))
+                ax.set_xlabel("X")
+                ax.set_ylabel("Y")
+                ax.set_zlabel("Z")
+                ax.view_init(elev=28, azim=-60)
+                ax.set_title(f"{head}   t = {ti:6.2f}", fontsize=9)
+                writer.grab_frame()
+                if progress:
+                    progress(i + 1, len(tf))
+        except BaseException:
+            _abandon(writer)
+            raise
+        writer.finish()
     return out

@@ -789,5 +789,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         where = f"{exc.filename}: " if exc.filename else ""
         _say(f"{_prog(args)}: error: {where}{exc.strerror or exc}")
         return 2
-    except Exception:
+    except Exception as exc:
+        # an exception raised while cleaning up after Ctrl-C / SIGTERM: still an interruption
+        context = exc.__context__
+        while context is not None:
+            if isinstance(context, (KeyboardInterrupt, Terminated)):
+                interrupted = isinstance(context, KeyboardInterrupt)
+                _say("rollingdisk: interrupted" if interrupted else "rollingdisk: terminated")
+                return 130 if interrupted else 143
+            context = context.__context__
         return _bug(args)

@@ -34,6 +34,8 @@ NO_MOTION, UNSTABLE, STABLE = 0, 1, 2
 def _real_array(name: str, value) -> np.ndarray:
     try:
         out = np.asarray(value, dtype=float)
+    except OverflowError:  # an int beyond floating-point range
+        raise ParameterError(f"{name} must be finite, got {value!r}") from None
     except (TypeError, ValueError):
         raise ParameterTypeError(f"{name} must be a real number or an array of real numbers, "
                                  f"got {type(value).__name__} {value!r}") from None
