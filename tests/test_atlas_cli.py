@@ -16,7 +16,7 @@ matplotlib.use("Agg")
 
 import pytest  # noqa: E402
 
-from rollingdisk.atlas import build_atlas, choose_motions  # noqa: E402
+from rollingdisk.atlas import build_atlas  # noqa: E402
 from rollingdisk.cli import main  # noqa: E402
 
 
@@ -87,16 +87,14 @@ def test_cli_atlas_is_a_thin_wrapper(tmp_path, monkeypatch, capsys):
 
 
 @pytest.mark.parametrize("h", [0.0, 0.17, 0.9, 3.0])
-def test_choose_motions_for_any_disk(h):
-    from rollingdisk import varpi2_circle
+def test_example_motions_for_any_disk(h):
+    """The motions the atlas shows are what it says: varpi^2 of eq. (45) > 0 and < 0."""
+    from rollingdisk import example_motions, varpi2_circle
 
-    m = choose_motions(h)
-    import math
-
-    th, O = m["stable"]
-    assert varpi2_circle(h, "rough", th, O * math.cos(th)) > 0
-    th, O = m["unstable"]
-    assert varpi2_circle(h, "rough", th, O * math.cos(th)) < 0
+    m = example_motions(h)
+    assert m.stable.ground == m.unstable.ground == "rough" and m.stable.h == h
+    assert varpi2_circle(h, "rough", m.stable.theta0, m.stable.omega30) > 0
+    assert varpi2_circle(h, "rough", m.unstable.theta0, m.unstable.omega30) < 0
 
 
 @pytest.mark.slow
@@ -142,20 +140,21 @@ def test_cli_animate(tmp_path, capsys):
     (["figures", "--out", "x", "--only", "fig3"], "fig4"),
     (["animate", "--theta0", "0.3", "--Omega0", "1", "--out", "m.avi"], "gif"),
     (["animate", "--theta0", "0.3", "--out", "m.gif"], "Omega0"),
-    (["animate", "--theta0", "0.3", "--Omega0", "1", "--dpi", "0", "--out", "m.gif"], ">= 1"),
+    (["animate", "--theta0", "0.3", "--Omega0", "1", "--dpi", "0", "--out", "m.gif"],
+     "dpi must be an integer in [20, 600]"),
     (["animate", "--theta0", "0.3", "--Omega0", "1", "--frames", "0", "--out", "m.gif"],
-     ">= 1"),
+     "frames must be an integer in [2, 2000]"),
     (["animate", "--theta0", "0.3", "--Omega0", "1", "--out", "nofolder/m.gif"],
      "no such folder"),
     (["animate", "--theta0", "0.3", "--Omega0", "1", "--out", "."], "gif"),
     (["map", "--ground", "rough", "--kind", "stability", "--out", "nofolder/x.png"],
      "no such folder"),
-    (["map", "--ground", "rough", "--kind", "stability", "--out", "."], "is a folder"),
+    (["map", "--ground", "rough", "--kind", "stability", "--out", "."], "must end in one of .png"),
     (["map", "--ground", "rough", "--kind", "all-omega30", "--h", "nan", "--out", "x.png"],
      "h must"),
     (["figures", "--out", "x", "--scale", "nan"], "scale must"),
     (["figures", "--out", "x", "--scale", "0"], "scale must"),
-    (["figures", "--out", "/proc/rollingdisk-test"], "rollingdisk: error"),
+    (["figures", "--out", "/proc/rollingdisk-test"], "rollingdisk figures: error"),
     (["atlas", "--h", "-0.1", "--out", "x"], "h must"),
 ])
 def test_cli_errors_one_line_exit_2(tmp_path, monkeypatch, capsys, argv, needle):

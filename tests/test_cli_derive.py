@@ -7,17 +7,16 @@ import sys
 from rollingdisk.cli import main
 
 
-def test_derive_json(capsys):
-    assert main(["derive", "--json"]) == 0
+def test_derive_json_section_2(capsys):
+    """The CLI passes the rows through as strict JSON; section 2 only (the full check of
+    every equation is tested in test_derivation.py and test_sections34.py)."""
+    assert main(["derive", "--sections", "2", "--json"]) == 0
     rows = json.loads(capsys.readouterr().out)
     eqs = {r["equation"] for r in rows}
-    assert eqs >= {"(1)", "(13)", "(37)", "(38)", "(49)", "(33)", "(45)", "(57)"}
+    assert eqs >= {"(1)", "(13)", "(37)", "(38)", "(49)"}
     assert all(r["status"] in ("confirmed", "misprint") for r in rows)
-    bad = {r["equation"] for r in rows if r["status"] == "misprint"}
-    assert {"(31) first form", "(33)", "(44)", "(45)", "(48)"} <= bad
-    assert all(r["printed"] and r["correct"] for r in rows if r["status"] == "misprint")
     listed = [r["equation"] for r in rows]
-    for eq in ("(37)", "(38)", "(49)"):  # checked once, with section 2
+    for eq in ("(37)", "(38)", "(49)"):  # checked once
         assert listed.count(eq) == 1, eq
 
 

@@ -6,7 +6,7 @@ import sys
 from pathlib import Path
 
 CORE = ["rollingdisk", "rollingdisk.disk", "rollingdisk.equations", "rollingdisk.steady",
-        "rollingdisk._stability", "rollingdisk._simulate"]
+        "rollingdisk._stability", "rollingdisk._simulate", "rollingdisk.regions"]
 SRC = str(Path(__file__).resolve().parents[1] / "src")
 
 

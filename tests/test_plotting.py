@@ -21,7 +21,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 from rollingdisk import plotting  # noqa: E402
-from rollingdisk.plotting import NO_MOTION, STABLE, UNSTABLE  # noqa: E402
+from rollingdisk.regions import NO_MOTION, STABLE, UNSTABLE, varpi2_zero_surface  # noqa: E402
 
 
 @pytest.fixture(autouse=True)
@@ -153,7 +153,7 @@ def test_surface_roots_are_zeros_of_varpi2():
     hh = np.linspace(0.0, 2.0, 9)
     TH, H = np.meshgrid(th, hh)
     for ground in ("rough", "smooth"):
-        lo, hi = plotting.varpi2_zero_surface(H, ground, TH)
+        lo, hi = varpi2_zero_surface(H, ground, TH)
         assert np.isfinite(lo).any() and np.isfinite(hi).any()
         apart = ~(np.abs(hi - lo) < 0.02 * hi)  # skip near-double roots
         for sheet in (lo, hi):
@@ -165,18 +165,18 @@ def test_surface_roots_are_zeros_of_varpi2():
 
 def test_surface_thin_disk_top_values():
     """theta0 -> 0, h = 0: the surface reaches omega30 = sqrt(4/5) (rough) and 2 (smooth)."""
-    _, hi = plotting.varpi2_zero_surface(0.0, "rough", 1e-4)
+    _, hi = varpi2_zero_surface(0.0, "rough", 1e-4)
     assert hi == pytest.approx(math.sqrt(0.8), rel=1e-3)
-    _, hi = plotting.varpi2_zero_surface(0.0, "smooth", 1e-4)
+    _, hi = varpi2_zero_surface(0.0, "smooth", 1e-4)
     assert hi == pytest.approx(2.0, rel=1e-3)
 
 
 def test_surface_smooth_closes_at_h_one_half():
     """Section 4.2: at theta0 = 0 the smooth surface ends at h = 1/2, omega30 = sqrt(3/2)."""
-    lo, hi = plotting.varpi2_zero_surface(0.499, "smooth", 1e-4)
+    lo, hi = varpi2_zero_surface(0.499, "smooth", 1e-4)
     assert lo == pytest.approx(math.sqrt(1.5), abs=0.06)
     assert hi == pytest.approx(math.sqrt(1.5), abs=0.06)
-    lo, hi = plotting.varpi2_zero_surface(0.52, "smooth", 1e-4)
+    lo, hi = varpi2_zero_surface(0.52, "smooth", 1e-4)
     assert np.isnan(lo) and np.isnan(hi)
 
 

@@ -4,13 +4,24 @@ Implements and checks M. Batista, "Steady Motion of a Rigid Disk of Finite Thick
 Horizontal Plane": equations of motion on rough and smooth ground (section 2), steady
 motions (section 3) and their stability (section 4).  Dimensionless units m = a = g = 1.
 
-The numeric core (``disk``, ``equations``, ``steady``, ``_stability``, ``trajectory``,
-``events``, ``_simulate``, ``measure``) imports
-only numpy and scipy (and numba, lazily, when the integrator first runs); ``symbolic``,
-``plotting``, ``figures``, ``animation``, ``atlas`` and ``cli`` are the edges that use it.
+The numeric core (``disk``, ``equations``, ``steady``, ``_stability``, ``regions``,
+``trajectory``, ``events``, ``_simulate``, ``measure``) imports only numpy and scipy (and
+numba, lazily, when the integrator first runs); ``symbolic``, ``plotting``, ``figures``,
+``animation``, ``atlas`` and ``cli`` are the edges that use it.
 """
 
-from . import _simulate, _stability, disk, equations, errors, events, measure, steady, trajectory
+from . import (
+    _simulate,
+    _stability,
+    disk,
+    equations,
+    errors,
+    events,
+    measure,
+    regions,
+    steady,
+    trajectory,
+)
 from ._simulate import *  # noqa: F403
 from ._stability import *  # noqa: F403
 from .disk import *  # noqa: F403
@@ -18,11 +29,13 @@ from .equations import *  # noqa: F403
 from .errors import *  # noqa: F403
 from .events import *  # noqa: F403
 from .measure import *  # noqa: F403
+from .regions import *  # noqa: F403
 from .steady import *  # noqa: F403
 from .trajectory import *  # noqa: F403
 
 __version__ = "0.1.0"
 
-__all__ = [*errors.__all__, *disk.__all__, *equations.__all__, *steady.__all__, *_stability.__all__,
-           *trajectory.__all__, *events.__all__, *_simulate.__all__, *measure.__all__]
+__all__ = [*errors.__all__, *disk.__all__, *equations.__all__, *steady.__all__,
+           *_stability.__all__, *regions.__all__, *trajectory.__all__, *events.__all__,
+           *_simulate.__all__, *measure.__all__]
 del _simulate, _stability

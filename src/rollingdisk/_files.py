@@ -24,7 +24,7 @@ from pathlib import Path
 from .errors import ParameterError
 
 __all__ = ["Terminated", "atomic_file", "atomic_dir", "check_writable",
-           "terminate_as_exception"]
+           "check_replaceable", "terminate_as_exception"]
 
 
 class Terminated(BaseException):  # noqa: N818 - named like KeyboardInterrupt
@@ -93,6 +93,53 @@ def check_writable(path, *, name: str = "out", folder: bool = False) -> Path:
         if target.exists() and not os.access(target, os.W_OK):
             raise ParameterError(f"{name}: {target} is read-only; remove it or choose "
                                  "another name")
+    return target
+
+
+def check_replaceable(path, names, *, name: str = "out") -> Path:
+    """Refuse, before any work, a folder of results that :func:`atomic_dir` may not replace.
+
+    :func:`atomic_dir` replaces the target folder as a whole.  That is right for a folder
+    this command wrote before (or an empty one), and wrong for any other: ``--out .`` or
+    ``--out ~`` must not delete the user's files.
+
+    Parameters
+    ----------
+    path : path-like
+        The folder of results.
+    names : iterable of str
+        The file names the command writes there.
+    name : str
+        The parameter's name for the message.
+
+    Returns
+    -------
+    Path
+        The absolute path (checked with :func:`check_writable` too).
+
+    Raises
+    ------
+    ParameterError
+        If the folder exists and holds anything but files named in ``names``.
+    """
+    target = check_writable(path, name=name, folder=True)
+    cwd = os.path.abspath(os.getcwd())
+    if os.path.commonpath([cwd, target]) == str(target):
+        raise ParameterError(f"{name}: {target} is the current folder or contains it; give a "
+                             "folder of its own (e.g. a new name)")
+    if target.is_dir():
+        allowed = set(names)
+        try:
+            entries = sorted(os.listdir(target))
+        except OSError as exc:
+            raise ParameterError(f"{name}: cannot read the folder {target}: "
+                                 f"{exc.strerror or exc}") from None
+        foreign = [e for e in entries if e not in allowed or not (target / e).is_file()]
+        if foreign:
+            raise ParameterError(
+                f"{name}: the folder {target} holds files this command did not write (e.g. "
+                f"{foreign[0]!r}) and would be replaced as a whole; give a new or empty "
+                "folder, or one this command wrote")
     return target
 
 

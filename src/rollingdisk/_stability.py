@@ -21,10 +21,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .disk import check_ground, check_h, check_real
+from .disk import check_ground, check_h, check_real, h_tilde
 from .equations import _rough_omega_dot, _smooth_omega_dot
 from .errors import ParameterError
-from .steady import Omega0_sq, SteadyMotion, _h_tilde_map, _map_domain
+from .steady import Omega0_sq, SteadyMotion, _map_domain
 
 __all__ = [
     "Stability",
@@ -119,7 +119,7 @@ def varpi2_closed_form(h, ground: str, theta0, omega20, omega30):
     """
     ground = check_ground(ground)
     h, t, w2, w3 = (np.asarray(a, dtype=float) for a in (h, theta0, omega20, omega30))
-    ht = _h_tilde_map(h, t)
+    ht = h_tilde(h, t)
     p = np.tan(t)
     h2 = h * h
     sq = np.sqrt(1.0 + p * p)
@@ -204,10 +204,10 @@ def reduced_jacobian(h: float, ground: str, theta0: float, omega20: float,
     (:func:`rollingdisk.equations.omega_dot`, eqs. 38 / 49).  Columns ``omega1..3`` are
     complex-step derivatives (exact to rounding).  The ``theta`` column is a central
     difference with two Richardson extrapolations (error ``O(delta^6)``, about 1e-12
-    relative here): the complex step cannot be used for ``theta`` because the kernels
-    contain ``h~ = h sgn(theta)`` and numpy's ``sign`` of a complex number is ``z/|z|``,
-    which would add a spurious derivative.  Stencil points on the other side of
-    ``theta = 0`` are evaluated with ``-h`` so that ``h~`` keeps its value at ``theta0``.
+    relative here), because ``h~ = h sgn(theta)`` jumps at ``theta = 0``: stencil points
+    on the other side of ``theta = 0`` are evaluated with ``-h`` so that ``h~`` keeps its
+    value at ``theta0`` (the kernels take the sign of the real part of ``theta``, so the
+    complex steps on ``omega1..3`` leave ``h~`` alone).
     """
     ground = check_ground(ground)
     h = check_h(h)
@@ -227,7 +227,7 @@ def reduced_jacobian(h: float, ground: str, theta0: float, omega20: float,
     # continues the branch of theta0 analytically across zero.
     d = 2e-3 * min(1.0, math.cos(theta0) * 2.0)
     while any(theta0 + sgn * d / k == 0.0 for k in (1, 2, 4) for sgn in (1, -1)):
-        d *= 0.9  # never evaluate at theta = 0 itself, where h~ = 0
+        d *= 0.9  # never evaluate at theta = 0 itself, which has no side
     side = 1.0 if theta0 >= 0 else -1.0
 
     def g(theta):
@@ -288,7 +288,7 @@ def circle_coefficients(h, ground: str, theta0):
     """
     ground = check_ground(ground)
     h, t = np.broadcast_arrays(np.asarray(h, dtype=float), np.asarray(theta0, dtype=float))
-    ht = _h_tilde_map(h, t)
+    ht = h_tilde(h, t)
     p = np.tan(t)
     h2 = h * h
     q = 1.0 + p * p

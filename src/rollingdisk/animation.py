@@ -26,17 +26,35 @@ from pathlib import Path
 
 import numpy as np
 
-from .disk import check_h, check_real
+from .disk import check_h, check_int, check_real
 from .equations import _geometry
-from .errors import ParameterError
-from .plotting import trajectory_series
+from .errors import ParameterError, ParameterTypeError
+from .plotting import check_dpi, trajectory_series
 
 __all__ = ["DiskPose", "body_frame", "disk_pose", "poses", "draw_disk", "animate",
-           "writer_for"]
+           "check_animation", "writer_for", "FRAMES_RANGE", "FPS_RANGE", "PIXEL_BUDGET"]
+
+#: Number of frames an animation may have.
+FRAMES_RANGE = (2, 2000)
+#: Frames per second.
+FPS_RANGE = (1, 60)
+#: Largest number of pixels of all frames together (frames x width x height): the GIF
+#: writer keeps every frame in memory, 4 bytes a pixel, so this is about 1 GB.
+PIXEL_BUDGET = 2.5e8
 
 
 def body_frame(psi: float, theta: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Unit vectors ``xi, eta, zeta`` of the frame C xi eta zeta in OXYZ (Figure 1)."""
+    """Unit vectors ``xi, eta, zeta`` of the frame C xi eta zeta in OXYZ (Figure 1).
+
+    Parameters
+    ----------
+    psi, theta : float
+        Spin and inclination angles [rad].
+
+    Returns
+    -------
+    (xi, eta, zeta) : tuple of (3,) ndarray
+    """
     sp, cp = math.sin(psi), math.cos(psi)
     st, ct = math.sin(theta), math.cos(theta)
     xi = np.array([cp, sp, 0.0])
@@ -73,7 +91,21 @@ class DiskPose:
 
 def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: float,
               n: int = 48) -> DiskPose:
-    """Positions of the drawn disk for one state (eqs. 4, 5, 7)."""
+    """Positions of the drawn disk for one state (eqs. 4, 5, 7).
+
+    Parameters
+    ----------
+    h : float
+        Half-thickness.
+    X_C, Y_C, psi, theta, phi : float
+        The centre C on the plane and the three angles [rad].
+    n : int
+        Points on each rim circle.
+
+    Returns
+    -------
+    DiskPose
+    """
     h = check_h(h)
     xi, eta, zeta = body_frame(psi, theta)
     _, _, _, _, y_P, z_P = _geometry(h, theta)
@@ -93,7 +125,21 @@ def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: f
 
 
 def poses(traj, n_frames: int = 60, *, n: int = 48) -> tuple[np.ndarray, list[DiskPose]]:
-    """Frame times (uniform in ``t``) and the disk poses of a trajectory at them."""
+    """Frame times (uniform in ``t``) and the disk poses of a trajectory at them.
+
+    Parameters
+    ----------
+    traj : Trajectory
+        Or any object with ``disk, ground, t, y``.
+    n_frames : int
+        Number of frames (at least 2).
+    n : int
+        Points on each rim circle.
+
+    Returns
+    -------
+    (times, poses) : (ndarray, list of DiskPose)
+    """
     t = np.asarray(traj.t, float)
     tf = np.linspace(t[0], t[-1], max(2, int(n_frames)))
     s = {k: np.interp(tf, t, trajectory_series(traj, k))
@@ -123,6 +169,19 @@ def draw_disk(ax, pose: DiskPose, *, face_color="#9ecae1", side_color="#4a7fb0",
     Everything on the plane gets a lower ``zorder`` than the disk; with
     ``ax.computed_zorder = False`` (as :func:`animate` sets) the disk, which never goes
     below the plane, is then always painted over them.
+
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.Axes3D
+    pose : DiskPose
+    face_color, side_color, marker_color : color
+    shadow : bool
+        Draw the shadow on ``Z = 0``.
+
+    Returns
+    -------
+    dict
+        The artists, by role (``"body"``, ``"contact"``, ``"shadow"``).
     """
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
@@ -155,11 +214,75 @@ def draw_disk(ax, pose: DiskPose, *, face_color="#9ecae1", side_color="#4a7fb0",
     return out
 
 
+def check_animation(n_frames=60, fps=15, dpi=70, size=(5.0, 4.4)) -> tuple:
+    """Validate the options of :func:`animate` before any work.
+
+    Parameters
+    ----------
+    n_frames : int
+        In :data:`FRAMES_RANGE`.
+    fps : int
+        In :data:`FPS_RANGE`.
+    dpi : int
+        In :data:`rollingdisk.plotting.DPI_RANGE`.
+    size : (float, float)
+        Width and height in inches, each in ``(0, 20]``.
+
+    Returns
+    -------
+    tuple
+        ``(n_frames, fps, dpi, size)``, checked.
+
+    Raises
+    ------
+    ParameterError
+        For a value out of range, or more than :data:`PIXEL_BUDGET` pixels in all.
+    """
+    n_frames = check_int("n_frames", n_frames, low=FRAMES_RANGE[0], high=FRAMES_RANGE[1])
+    fps = check_int("fps", fps, low=FPS_RANGE[0], high=FPS_RANGE[1])
+    dpi = check_dpi(dpi)
+    try:
+        w, h = size
+    except (TypeError, ValueError):
+        raise ParameterTypeError(f"size must be (width, height) in inches, got {size!r}") \
+            from None
+    size = (check_real("width", w, low=0.0, high=20.0, low_open=True),
+            check_real("height", h, low=0.0, high=20.0, low_open=True))
+    pixels = n_frames * (size[0] * dpi) * (size[1] * dpi)
+    if pixels > PIXEL_BUDGET:
+        raise ParameterError(
+            f"{n_frames} frames of {size[0] * dpi:.0f} x {size[1] * dpi:.0f} pixels are "
+            f"{pixels:.3g} pixels, more than {PIXEL_BUDGET:.3g} (about 1 GB in memory): "
+            "give fewer frames or a lower dpi")
+    return n_frames, fps, dpi, size
+
+
 def writer_for(path, fps: int):
-    """A matplotlib animation writer for ``path``: Pillow for ``.gif``, ffmpeg for ``.mp4``."""
+    """A matplotlib animation writer for ``path``: Pillow for ``.gif``, ffmpeg for ``.mp4``.
+
+    Parameters
+    ----------
+    path : path-like
+        The file to write, ``.gif`` or ``.mp4``.
+    fps : int
+        Frames per second.
+
+    Returns
+    -------
+    matplotlib.animation.AbstractMovieWriter
+
+    Raises
+    ------
+    ParameterError
+        For another suffix, or ``.mp4`` without ffmpeg.
+    """
     from matplotlib import animation as mpl_animation
 
-    suffix = Path(path).suffix.lower()
+    try:
+        suffix = Path(path).suffix.lower()
+    except TypeError:
+        raise ParameterTypeError(f"out must be a file name, got {type(path).__name__} "
+                                 f"{path!r}") from None
     if suffix == ".gif":
         return mpl_animation.PillowWriter(fps=fps)
     if suffix == ".mp4":
@@ -168,6 +291,26 @@ def writer_for(path, fps: int):
                              "use a .gif file name instead")
         return mpl_animation.FFMpegWriter(fps=fps)
     raise ParameterError(f"out must end in .gif or .mp4, got {str(path)!r}")
+
+
+def _abandon(writer) -> None:
+    """Stop a movie writer without finishing its file (ffmpeg: end the process)."""
+    proc = getattr(writer, "_proc", None)
+    if proc is not None:
+        import contextlib
+
+        with contextlib.suppress(Exception):
+            proc.kill()
+            proc.wait()
+
+
+def _check_trajectory(traj) -> None:
+    if not all(hasattr(traj, name) for name in ("disk", "ground", "t", "y")):
+        raise ParameterTypeError(f"traj must be a Trajectory (disk, ground, t, y), got "
+                                 f"{type(traj).__name__}")
+    t = np.asarray(traj.t, float)
+    if t.ndim != 1 or t.size < 1 or not np.all(np.isfinite(t)):
+        raise ParameterError("traj.t must be a non-empty 1-D array of finite times")
 
 
 def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
@@ -180,12 +323,34 @@ def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
     the rotation ``phi`` is visible); the path of the contact point P is traced on the
     plane ``Z = 0`` up to the current time, the projection of C's path dashed.
 
-    Returns the path written.
+    The file is written under a temporary name and renamed at the end: it appears whole
+    or not at all (an interrupted run leaves nothing).
+
+    Parameters
+    ----------
+    traj : Trajectory
+        The motion to draw (``disk, ground, t, y``).
+    out : path-like
+        ``.gif``, or ``.mp4`` when ffmpeg is installed; its folder must exist.
+    n_frames, fps, dpi, size
+        Checked by :func:`check_animation`.
+    title : str, optional
+        Title above the frames (default: the ground and ``h``).
+    progress : callable, optional
+        Called with ``(frame, n_frames)`` after each frame.
+
+    Returns
+    -------
+    Path
+        ``out``.
     """
-    n_frames = int(check_real("n_frames", n_frames, low=2))
-    fps = int(check_real("fps", fps, low=1))
-    out = Path(out)
+    from ._files import atomic_file, check_writable
+
+    _check_trajectory(traj)
+    n_frames, fps, dpi, size = check_animation(n_frames, fps, dpi, size)
     writer = writer_for(out, fps)
+    out = Path(out)
+    check_writable(out, name="out")
     from matplotlib.figure import Figure
 
     tf, frames = poses(traj, n_frames)
@@ -196,31 +361,41 @@ def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
     fig = Figure(figsize=size)
     ax = fig.add_subplot(1, 1, 1, projection="3d")
     head = title if title is not None else f"{traj.ground} ground, h = {traj.disk.h:.4g}"
-    with writer.saving(fig, str(out), dpi):
-        for i, (ti, pose) in enumerate(zip(tf, frames, strict=True)):
-            ax.cla()
-            ax.set_autoscale_on(False)  # fixed limits: no autoscaling from the drawn parts
-            ax.set_xlim(x0, x1)
-            ax.set_ylim(y0, y1)
-            ax.set_zlim(z0, z1)
-            # the plane Z = 0 is the bottom pane of the axes (zlim starts at 0)
-            ax.zaxis.set_pane_color((0.85, 0.85, 0.85, 1.0))
-            k = int(np.searchsorted(t, ti, side="right"))
-            ax.computed_zorder = False  # plane first, then the disk (see draw_disk)
-            ax.plot(XP[:k], YP[:k], 0.0 * XP[:k], color="tab:red", lw=1.0, zorder=1.2)
-            ax.plot(XC[:k], YC[:k], 0.0 * XC[:k], color="tab:blue", lw=0.7, ls="--",
-                    zorder=1.2)
-            draw_disk(ax, pose)
-            ax.set_xlim(x0, x1)
-            ax.set_ylim(y0, y1)
-            ax.set_zlim(z0, z1)
-            ax.set_box_aspect((x1 - x0, y1 - y0, z1 - z0))
-            ax.set_xlabel("X")
-            ax.set_ylabel("Y")
-            ax.set_zlabel("Z")
-            ax.view_init(elev=28, azim=-60)
-            ax.set_title(f"{head}   t = {ti:6.2f}", fontsize=9)
-            writer.grab_frame()
-            if progress:
-                progress(i + 1, len(tf))
+    import matplotlib as mpl
+
+    # not writer.saving(): it finishes the file even when interrupted, and an exception in
+    # that clean-up would hide the interruption; here an unfinished file is just dropped
+    with atomic_file(out, mode=None) as tmp, mpl.rc_context({"savefig.bbox": None}):
+        writer.setup(fig, str(tmp), dpi)
+        try:
+            for i, (ti, pose) in enumerate(zip(tf, frames, strict=True)):
+                ax.cla()
+                ax.set_autoscale_on(False)  # fixed limits: no autoscaling from the drawn parts
+                ax.set_xlim(x0, x1)
+                ax.set_ylim(y0, y1)
+                ax.set_zlim(z0, z1)
+                # the plane Z = 0 is the bottom pane of the axes (zlim starts at 0)
+                ax.zaxis.set_pane_color((0.85, 0.85, 0.85, 1.0))
+                k = int(np.searchsorted(t, ti, side="right"))
+                ax.computed_zorder = False  # plane first, then the disk (see draw_disk)
+                ax.plot(XP[:k], YP[:k], 0.0 * XP[:k], color="tab:red", lw=1.0, zorder=1.2)
+                ax.plot(XC[:k], YC[:k], 0.0 * XC[:k], color="tab:blue", lw=0.7, ls="--",
+                        zorder=1.2)
+                draw_disk(ax, pose)
+                ax.set_xlim(x0, x1)
+                ax.set_ylim(y0, y1)
+                ax.set_zlim(z0, z1)
+                ax.set_box_aspect((x1 - x0, y1 - y0, z1 - z0))
+                ax.set_xlabel("X")
+                ax.set_ylabel("Y")
+                ax.set_zlabel("Z")
+                ax.view_init(elev=28, azim=-60)
+                ax.set_title(f"{head}   t = {ti:6.2f}", fontsize=9)
+                writer.grab_frame()
+                if progress:
+                    progress(i + 1, len(tf))
+        except BaseException:
+            _abandon(writer)
+            raise
+        writer.finish()
     return out

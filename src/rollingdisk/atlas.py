@@ -28,15 +28,15 @@ from pathlib import Path
 
 import numpy as np
 
-from .disk import Disk, check_h, check_real
-from .errors import ParameterError
+from ._files import atomic_dir, check_replaceable
+from .disk import DEFAULT_H, Disk, check_h, check_real
 
-__all__ = ["AtlasResult", "build_atlas", "choose_motions", "steady_trajectory",
-           "DEFAULT_H"]
+__all__ = ["AtlasResult", "ATLAS_FILES", "build_atlas", "steady_trajectory"]
 
-#: Default half-thickness: close to a commercial Euler's disk (radius 37.5 mm, 12.7 mm
-#: thick gives h = 0.17).
-DEFAULT_H = 0.17
+#: The files of an atlas folder (the folder is written as a whole, see :func:`build_atlas`).
+ATLAS_FILES = ("thresholds.json", "existence.png", "stability.png", "varpi2.png",
+               "all_omega30.png", "motion_stable.png", "motion_stable.gif",
+               "motion_unstable.png", "motion_unstable.gif", "index.html")
 
 
 @dataclass(frozen=True)
@@ -84,9 +84,16 @@ class _Progress:
         if self.enabled:
             print(f"[{self.k}/{self.n}] {name} ...", end="", file=self.stream, flush=True)
 
+    def abort(self):
+        """End the open progress line (the run was interrupted or failed)."""
+        if self.enabled and getattr(self, "_t", None) is not None:
+            print(file=self.stream, flush=True)
+        self._t = None
+
     def done(self, note: str = ""):
         dt = time.perf_counter() - self._t
         self.timings[self._name] = dt
+        self._t = None
         if self.enabled:
             extra = f" ({note})" if note else ""
             print(f" {dt:.1f} s{extra}", file=self.stream, flush=True)
@@ -121,44 +128,6 @@ def steady_trajectory(h: float, ground: str, theta0: float, *, Omega0: float | N
     return motion, stability(motion), traj
 
 
-def choose_motions(h: float) -> dict:
-    """One clearly stable and one clearly unstable steady circle on rough ground.
-
-    Stable: ``theta0 = 0.5`` rad with ``omega30 = 1.5``: above the uniform bound
-    ``omega30^2 > 1`` of the paper's conclusion (confirmed, docs/errata.md), so stable for
-    every h.  Unstable: on a grid of
-    ``(theta0, omega30)`` the point with ``varpi^2 < 0`` whose growth rate is closest to
-    0.35 (fast enough to show within a short simulation, slow enough to be seen
-    starting from the steady motion).  Returns ``{"stable": (theta0, Omega0), "unstable":
-    (theta0, Omega0)}``.
-    """
-
-    h = check_h(h)
-    out = {}
-    th_s, w_s = 0.5, 1.5
-    out["stable"] = (th_s, w_s / math.cos(th_s))
-    th_u, w_u = _best_on_grid(h, lambda v2: np.where(v2 < 0, -np.abs(np.sqrt(
-        np.abs(v2)) - 0.35), -np.inf))
-    out["unstable"] = (th_u, w_u / math.cos(th_u))
-    return out
-
-
-def _best_on_grid(h, score):
-    from ._stability import varpi2_circle
-
-    th = np.linspace(0.05, 1.4, 55)
-    w = np.linspace(0.15, 2.0, 38)
-    TH, W = np.meshgrid(th, w)
-    with np.errstate(all="ignore"):
-        v2 = np.asarray(varpi2_circle(h, "rough", TH, W), float)
-        s = score(np.where(np.isfinite(v2), v2, np.nan))
-    s = np.where(np.isfinite(s), s, -np.inf)
-    i = np.unravel_index(int(np.argmax(s)), s.shape)
-    if not np.isfinite(s[i]):
-        raise ParameterError(f"h = {h:g}: found no steady circle of the requested kind")
-    return float(TH[i]), float(W[i])
-
-
 # ------------------------------------------------------------------------------ atlas
 def _save(fig, path: Path, dpi: int, files: list):
     fig.savefig(path, dpi=dpi)
@@ -170,40 +139,76 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
                 progress: bool = True, stream=None) -> AtlasResult:
     """Write the atlas of the disk of half-thickness ``h`` into ``out_dir``.
 
+    The folder is built under a temporary name beside ``out_dir`` and swapped in at the
+    end (:func:`rollingdisk._files.atomic_dir`): it appears whole or not at all, its
+    ``index.html`` and ``thresholds.json`` always describe the same disk, and of two runs
+    into the same folder the one that finishes last leaves its whole atlas.  An existing
+    ``out_dir`` is replaced only if it holds nothing but atlas files (:data:`ATLAS_FILES`).
+
     Parameters
     ----------
     h : float
-        Half-thickness in units of the radius (default 0.17, about a commercial Euler's
-        disk).
-    out_dir : path
-        Folder to write (created if needed).
+        Half-thickness in units of the radius, ``0 <= h <= 1e8`` (default
+        :data:`rollingdisk.disk.DEFAULT_H` = 0.17, about a commercial Euler's disk).
+    out_dir : path-like
+        Folder to write; its parent folder must exist.
     quick : bool
         Coarse grids, short simulations and few animation frames (for tests).
     progress : bool
         Print one line per step on ``stream`` (stderr by default).
+    stream : file-like, optional
+        Where the progress lines go.
 
     Returns
     -------
     AtlasResult
+        The paths written (in ``out_dir``), the timings and the two simulated motions.
+
+    Raises
+    ------
+    ParameterError
+        For a bad ``h``, an ``out_dir`` that cannot be written or holds other files, or a
+        disk with no unstable steady circle to show (all before any file is written).
     """
+    from .regions import example_motions
+
+    h = check_h(h)
+    target = check_replaceable(out_dir, ATLAS_FILES, name="out_dir")
+    chosen = example_motions(h)  # before any work: fails for a disk with no unstable circle
+    pr = _Progress(8, stream=stream, enabled=bool(progress))
+    try:
+        with atomic_dir(target) as out:
+            files, motions = _write_atlas(h, out, chosen, quick=bool(quick), pr=pr)
+    except BaseException:
+        pr.abort()  # the message that follows gets a line of its own
+        raise
+    index = target / "index.html"
+    if progress:
+        print(f"atlas written to {index} in {pr.total():.1f} s", file=pr.stream, flush=True)
+    return AtlasResult(target, index, tuple(target / p.name for p in files), h,
+                       dict(pr.timings), motions)
+
+
+def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[list, dict]:
+    """The steps of :func:`build_atlas`, writing into the (temporary) folder ``out``.
+
+    Returns the paths written (index excluded) and the records of the two motions."""
     from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
 
     from . import plotting
     from ._stability import thresholds
     from .animation import animate
+    from .regions import STABLE
 
-    h = check_h(h)
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
     files: list[Path] = []
     dpi = 60 if quick else 90
     n_map = (60, 50) if quick else (220, 180)
-    pr = _Progress(8, stream=stream, enabled=progress)
 
     # 1. thresholds ------------------------------------------------------------------
     pr.step("thresholds")
     thr = thresholds(h).as_dict()
-    (out / "thresholds.json").write_text(json.dumps({"h": h, **_floats(thr)}, indent=2))
+    (out / "thresholds.json").write_text(
+        json.dumps({"h": h, **_floats(thr)}, indent=2, allow_nan=False))
     files.append(out / "thresholds.json")
     pr.done()
 
@@ -217,7 +222,7 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
                                 title=f"smooth ground, $h={h:.4g}$")
     fig.tight_layout()
     _save(fig, out / "existence.png", dpi, files)
-    pr.done(f"stable share {m_ex.share(plotting.STABLE):.2f}")
+    pr.done(f"stable share {m_ex.share(STABLE):.2f}")
 
     # 3. stability maps -----------------------------------------------------------------
     pr.step("stability maps")
@@ -256,11 +261,11 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
     pr.done()
 
     # 6./7. two steady motions, simulated -----------------------------------------------
-    chosen = choose_motions(h)
     motions = {}
     for kind in ("stable", "unstable"):
         pr.step(f"{kind} steady circle: simulate, plot, animate")
-        theta0, Omega0 = chosen[kind]
+        chosen_motion = getattr(chosen, kind)
+        theta0, Omega0 = chosen_motion.theta0, chosen_motion.Omega0
         t_end = 12.0 if quick else 30.0
         kick = 0.05 if kind == "stable" else 1e-4
         motion, stab, traj = steady_trajectory(h, "rough", theta0, Omega0=Omega0,
@@ -279,12 +284,10 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
 
     # 8. index page ------------------------------------------------------------------------
     pr.step("index.html")
-    index = out / "index.html"
-    index.write_text(_index_html(h, thr, motions, [p.name for p in files]), encoding="utf-8")
+    (out / "index.html").write_text(_index_html(h, thr, motions, [p.name for p in files]),
+                                    encoding="utf-8")
     pr.done()
-    if progress:
-        print(f"atlas written to {index} in {pr.total():.1f} s", file=pr.stream, flush=True)
-    return AtlasResult(out, index, tuple(files), h, dict(pr.timings), motions)
+    return files, motions
 
 
 def _floats(d):

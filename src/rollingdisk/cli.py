@@ -1,30 +1,70 @@
 """Command-line interface: a thin layer over the library, one subcommand per entry point.
 
-Errors in the input (and physically impossible requests) end with exit status 2 and one
-line on stderr, never a traceback.
+Exit status and messages:
+
+* 0: done;
+* 2: bad input, one line on stderr and no traceback: a usage error of the command line, an
+  input error of the library (:data:`rollingdisk.errors.INPUT_ERRORS`: a value out of its
+  range, a wrong type, an impossible request), or an output path that cannot be written;
+  every number is checked when the command line is read, before any work;
+* 1: anything else is a bug in rollingdisk: the traceback, then one line saying so;
+* 130 (Ctrl-C) and 143 (SIGTERM): "interrupted" / "terminated", and no partial file: every
+  output is written under a temporary name and renamed when complete (:mod:`._files`).
+
+JSON output is strict (no NaN or infinity: ``json.dumps(..., allow_nan=False)``).
+
+One module of about 800 lines on purpose: the parser and the handler of every subcommand,
+kept together so that the contract above visibly holds for all of them; each handler is a
+thin call into the library.
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+import os
 import sys
 from collections.abc import Sequence
 
-from ._files import Terminated, terminate_as_exception
-from .atlas import DEFAULT_H  # the default disk of the picture commands
-from .errors import ParameterError
+from ._files import Terminated, check_writable, terminate_as_exception
+from .disk import DEFAULT_H, H_MAX, check_int, check_real
+from .errors import INPUT_ERRORS, ParameterError
 
-__all__ = ["main", "parse_angle"]
+__all__ = ["main", "parse_angle", "build_parser"]
 
+#: Longest simulated time of ``animate`` (the frames sample it uniformly; the integrator
+#: would need minutes beyond it).
+ANIMATE_T_END_MAX = 1e4
 
 
 class CLIError(Exception):
-    """A user error: printed as one line on stderr, exit status 2."""
+    """A usage error of the command line: printed as one line on stderr, exit status 2."""
+
+
+class _Exit(Exception):  # noqa: N818 - argparse's exit (--help), as a return value
+    def __init__(self, status: int):
+        super().__init__(status)
+        self.status = status
 
 
 def parse_angle(text: str) -> float:
-    """An angle in radians, or in degrees with a ``deg`` suffix (``30deg``)."""
+    """An angle in radians, or in degrees with a ``deg`` suffix (``30deg``).
+
+    Parameters
+    ----------
+    text : str
+        ``"0.5"``, ``"30deg"`` or ``"30°"``.
+
+    Returns
+    -------
+    float
+        The angle in radians.
+
+    Examples
+    --------
+    >>> parse_angle("90deg") == math.pi / 2
+    True
+    """
     s = str(text).strip().lower()
     try:
         if s.endswith("deg"):
@@ -38,34 +78,55 @@ def parse_angle(text: str) -> float:
         ) from None
 
 
-def _positive_int(text: str) -> int:
-    """An integer >= 1 (frames, frames per second, dots per inch)."""
-    try:
-        value = int(text)
-    except ValueError:
-        value = 0
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"must be an integer >= 1, got {text!r}")
-    return value
+def _real(name: str, **bounds):
+    """An argparse type: a real number checked as the library checks it (same message)."""
+    def parse(text: str) -> float:
+        try:
+            value = float(text)
+        except ValueError:
+            value = text  # check_real names the parameter and the range
+        try:
+            return check_real(name, value, **bounds)
+        except INPUT_ERRORS as exc:
+            raise argparse.ArgumentTypeError(str(exc)) from None
+
+    return parse
+
+
+def _integer(name: str, low: int | None = None, high: int | None = None):
+    """An argparse type: an integer checked as the library checks it (same message)."""
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            value = text
+        try:
+            return check_int(name, value, low=low, high=high)
+        except INPUT_ERRORS as exc:
+            raise argparse.ArgumentTypeError(str(exc)) from None
+
+    return parse
+
+
+_positive_int = _integer("the value", low=1)
 
 
 def _check_out_file(path: str, command: str) -> None:
-    """Refuse an output file whose folder does not exist, or which is a folder, before work."""
-    import os
-
-    target = os.path.abspath(path)
-    if os.path.isdir(target):
-        raise CLIError(f"rollingdisk {command}: --out {path!r} is a folder; give a file name")
-    if not os.path.isdir(os.path.dirname(target)):
-        raise CLIError(f"rollingdisk {command}: --out: no such folder: "
-                       f"{os.path.dirname(target)}")
+    """Refuse, before any work, an output file that cannot be written."""
+    check_writable(path, name="out")
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse that reports usage errors as one line and exit status 2."""
+    """argparse that reports usage errors as one line (exit status 2) and returns from
+    ``--help`` instead of exiting the interpreter."""
 
     def error(self, message: str):  # noqa: D401 - argparse API
-        raise CLIError(f"{self.prog}: {message}")
+        raise CLIError(f"{self.prog}: error: {message}")
+
+    def exit(self, status=0, message=None):  # noqa: D401 - argparse API
+        if message:
+            sys.stderr.write(message)
+        raise _Exit(status)
 
 
 # ---------------------------------------------------------------------------- derive
@@ -86,13 +147,16 @@ def _run_derive(args) -> int:
     if args.json:
         import json
 
-        print(json.dumps([row.as_dict() for row in rows], indent=2))
+        print(json.dumps([row.as_dict() for row in rows], indent=2, allow_nan=False))
     else:
         print(format_table(rows))
     return 0
 
 
 # ---------------------------------------------------------------------------- steady motions
+_H = _real("h", low=0.0, high=H_MAX)  # the half-thickness, as Disk checks it
+
+
 def _add_motion_args(p, *, h_default: float | None = None):
     """The arguments that name a steady motion (shared by steady, simulate, animate).
 
@@ -102,19 +166,22 @@ def _add_motion_args(p, *, h_default: float | None = None):
     p.add_argument("--ground", choices=("rough", "smooth"), default="rough",
                    help="rough (no slip, default) or smooth (no friction)")
     if h_default is None:
-        p.add_argument("--h", type=float, required=True, help="half-thickness / radius, h >= 0")
+        p.add_argument("--h", type=_H, required=True, help="half-thickness / radius, h >= 0")
     else:
-        p.add_argument("--h", type=float, default=h_default,
+        p.add_argument("--h", type=_H, default=h_default,
                        help=f"half-thickness / radius, h >= 0 (default {h_default:g})")
     p.add_argument("--theta0", type=parse_angle,
                    help="steady inclination (radians, or e.g. 30deg; negative: --theta0=-30deg)")
     p.add_argument("--motion", choices=("circle", "straight"), default=None,
                    help="circle (spin in place included) or straight; default from the options")
     g = p.add_mutually_exclusive_group()
-    g.add_argument("--Omega0", type=float, help="spin rate d psi/dt of a steady circle")
-    g.add_argument("--rC", type=float, help="signed radius of the circle of the centre C")
-    g.add_argument("--rP", type=float, help="signed radius of the circle of the contact point")
-    g.add_argument("--omega0", type=float, help="rolling rate d phi/dt of a straight line")
+    g.add_argument("--Omega0", type=_real("Omega0"),
+                   help="spin rate d psi/dt of a steady circle")
+    g.add_argument("--rC", type=_real("r_C"), help="signed radius of the circle of the centre C")
+    g.add_argument("--rP", type=_real("r_P"),
+                   help="signed radius of the circle of the contact point")
+    g.add_argument("--omega0", type=_real("omega0"),
+                   help="rolling rate d phi/dt of a straight line")
     return g
 
 
@@ -127,16 +194,16 @@ def _motion_from_args(args, command: str):
     straight = args.motion == "straight" or (args.motion is None and args.omega0 is not None)
     if straight:
         if args.omega0 is None:
-            raise CLIError(f"rollingdisk {command}: --motion straight needs --omega0")
+            raise CLIError(f"rollingdisk {command}: error: --motion straight needs --omega0")
         return straight_line(disk, args.ground, args.omega0, theta0=args.theta0)
     if args.omega0 is not None:
-        raise CLIError(f"rollingdisk {command}: --omega0 is for --motion straight; "
+        raise CLIError(f"rollingdisk {command}: error: --omega0 is for --motion straight; "
                        "circles take --Omega0, --rC or --rP")
     if args.theta0 is None:
-        raise CLIError(f"rollingdisk {command}: give --theta0 (e.g. 30deg) with one of "
+        raise CLIError(f"rollingdisk {command}: error: give --theta0 (e.g. 30deg) with one of "
                        "--Omega0, --rC, --rP, or --motion straight --omega0 W")
     if args.Omega0 is None and args.rC is None and args.rP is None:
-        raise CLIError(f"rollingdisk {command}: give one of --Omega0, --rC, --rP "
+        raise CLIError(f"rollingdisk {command}: error: give one of --Omega0, --rC, --rP "
                        "(or --motion straight --omega0 W)")
     return steady_motion(disk, args.ground, args.theta0, Omega0=args.Omega0, r_C=args.rC,
                          r_P=args.rP)
@@ -167,7 +234,7 @@ def _run_steady(args) -> int:
     if args.json:
         import json
 
-        print(json.dumps(rec))
+        print(json.dumps(rec, allow_nan=False))
         return 0
     labels = [
         ("ground", "ground"), ("h", "half-thickness / radius"), ("motion", "kind of motion"),
@@ -195,7 +262,7 @@ def _add_thresholds(sub) -> None:
     """``rollingdisk thresholds``: critical speeds of eqs. (42), (43), (53), (57)."""
     p = sub.add_parser("thresholds", help="critical squared speeds for a disk (eqs. 42, 43, "
                        "53, 57)")
-    p.add_argument("--h", type=float, required=True, help="half-thickness / radius, h >= 0")
+    p.add_argument("--h", type=_H, required=True, help="half-thickness / radius, h >= 0")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_run_thresholds)
 
@@ -207,7 +274,7 @@ def _run_thresholds(args) -> int:
     if args.json:
         import json
 
-        print(json.dumps(d))
+        print(json.dumps(d, allow_nan=False))
         return 0
     eqs = {("rough", "straight_line_omega20_sq"): "(42)",
            ("rough", "se_circle_omega30_sq"): "(43)",
@@ -473,18 +540,30 @@ def _run_simulate(args) -> int:
 # ---------------------------------------------------------------------------- figures, maps
 def _add_figures(sub) -> None:
     """``figures``, ``map``, ``animate``, ``atlas``: the pictures (edges over the core)."""
+    from .animation import FPS_RANGE, FRAMES_RANGE
+    from .figures import FIGURES, SCALE_MAX
+    from .plotting import DPI_RANGE, IMAGE_FORMATS
+
+    def dpi_arg(p, default):
+        p.add_argument("--dpi", type=_integer("dpi", *DPI_RANGE), default=default,
+                       help=f"resolution, dots per inch in [{DPI_RANGE[0]}, {DPI_RANGE[1]}] "
+                       f"(default {default})")
+
     p = sub.add_parser("figures", help="recompute the paper's Figures 4-8 as PNG files")
-    p.add_argument("--out", required=True, help="output folder")
-    p.add_argument("--scale", type=float, default=1.0,
-                   help="grid resolution factor (default 1; 0.2 for a quick look)")
-    p.add_argument("--dpi", type=_positive_int, default=110)
-    p.add_argument("--only", nargs="+", metavar="FIG",
-                   help="a subset of fig4 fig5 fig6 fig7 fig8")
+    p.add_argument("--out", required=True,
+                   help="output folder (its parent must exist; replaced as a whole, so it "
+                   "must be new, empty or written by this command)")
+    p.add_argument("--scale", type=_real("scale", low=0.0, high=SCALE_MAX, low_open=True),
+                   default=1.0, help=f"grid resolution factor in (0, {SCALE_MAX:g}] "
+                   "(default 1; 0.2 for a quick look)")
+    dpi_arg(p, 110)
+    p.add_argument("--only", nargs="+", metavar="FIG", choices=tuple(FIGURES),
+                   help=f"a subset of {' '.join(FIGURES)}")
     p.set_defaults(handler=_run_figures)
 
     p = sub.add_parser("map", help="existence / stability map or varpi^2 = 0 surface")
     p.add_argument("--ground", required=True, choices=("rough", "smooth"))
-    p.add_argument("--h", type=float, default=DEFAULT_H,
+    p.add_argument("--h", type=_H, default=DEFAULT_H,
                    help=f"half-thickness (default {DEFAULT_H:g}; not used by --kind surface, "
                    "which spans h)")
     p.add_argument("--kind", required=True,
@@ -492,28 +571,37 @@ def _add_figures(sub) -> None:
                    help="existence: (theta0, r_C) plane; stability: (theta0, omega30) "
                    "plane; surface: varpi^2 = 0 in (theta0, h, omega30); all-omega30: "
                    "(theta0, h) region stable for every omega30")
-    p.add_argument("--out", required=True, help="image file (.png, .pdf, .svg)")
-    p.add_argument("--dpi", type=_positive_int, default=110)
+    p.add_argument("--out", required=True,
+                   help=f"image file ({', '.join('.' + f for f in IMAGE_FORMATS)})")
+    dpi_arg(p, 110)
     p.set_defaults(handler=_run_map)
 
     p = sub.add_parser("animate", help="simulate a steady motion from a small tilt "
                        "perturbation and write a 3D animation (.gif, or .mp4 with ffmpeg)")
     _add_motion_args(p, h_default=DEFAULT_H)
-    p.add_argument("--perturb", type=float, default=0.0, help="added to theta(0)")
-    p.add_argument("--kick", type=float, default=0.01, help="added to omega1(0) = dtheta/dt")
-    p.add_argument("--t-end", type=float, default=20.0, help="simulated time")
-    p.add_argument("--frames", type=_positive_int, default=60)
-    p.add_argument("--fps", type=_positive_int, default=15)
-    p.add_argument("--dpi", type=_positive_int, default=70)
+    p.add_argument("--perturb", type=_real("perturb"), default=0.0, help="added to theta(0)")
+    p.add_argument("--kick", type=_real("kick"), default=0.01,
+                   help="added to omega1(0) = dtheta/dt (default 0.01)")
+    p.add_argument("--t-end", dest="t_end", default=20.0,
+                   type=_real("t_end", low=0.0, high=ANIMATE_T_END_MAX, low_open=True),
+                   help=f"simulated time in (0, {ANIMATE_T_END_MAX:g}] (default 20)")
+    p.add_argument("--frames", type=_integer("frames", *FRAMES_RANGE), default=60,
+                   help=f"number of frames in [{FRAMES_RANGE[0]}, {FRAMES_RANGE[1]}] "
+                   "(default 60)")
+    p.add_argument("--fps", type=_integer("fps", *FPS_RANGE), default=15,
+                   help=f"frames per second in [{FPS_RANGE[0]}, {FPS_RANGE[1]}] (default 15)")
+    dpi_arg(p, 70)
     p.add_argument("--out", required=True, help="motion.gif (or .mp4 when ffmpeg exists)")
     p.set_defaults(handler=_run_animate)
 
     p = sub.add_parser("atlas", help="the atlas of one disk: thresholds, maps, two simulated "
                        "steady motions with animations, index.html")
-    p.add_argument("--h", type=float, default=DEFAULT_H,
+    p.add_argument("--h", type=_H, default=DEFAULT_H,
                    help=f"half-thickness (default {DEFAULT_H:g}, close to a commercial "
                    "Euler's disk)")
-    p.add_argument("--out", default="atlas", help="output folder (default ./atlas)")
+    p.add_argument("--out", default="atlas",
+                   help="output folder (default ./atlas; replaced as a whole, so it must be "
+                   "new, empty or an earlier atlas)")
     p.add_argument("--quick", action="store_true", help="coarse grids, short simulations")
     p.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
     p.set_defaults(handler=_run_atlas)
@@ -537,7 +625,10 @@ def _run_figures(args) -> int:
 
 
 def _run_map(args) -> int:
-    _check_out_file(args.out, "map")
+    from .plotting import image_format
+
+    image_format(args.out)  # before any work
+    check_writable(args.out, name="out")
     _agg()
     from . import plotting
 
@@ -551,22 +642,26 @@ def _run_map(args) -> int:
         m = plotting.plot_all_omega30_stable(args.ground, mark_h=args.h)
     fig = m.ax.figure
     fig.tight_layout()
-    fig.savefig(args.out, dpi=args.dpi)
+    plotting.save_figure(fig, args.out, dpi=args.dpi)
     print(args.out)
     return 0
 
 
 def _run_animate(args) -> int:
+    from .animation import check_animation, writer_for
+
+    # everything that can be refused, before the simulation
+    check_animation(args.frames, args.fps, args.dpi)
+    writer_for(args.out, args.fps)
+    check_writable(args.out, name="out")
+    motion = _motion_from_args(args, "animate")
     _agg()
     import numpy as np
 
     from ._simulate import simulate_steady
     from ._stability import stability
-    from .animation import animate, writer_for
+    from .animation import animate
 
-    writer_for(args.out, args.fps)  # a bad file name fails before the simulation
-    _check_out_file(args.out, "animate")
-    motion = _motion_from_args(args, "animate")
     stab = stability(motion)
     traj = simulate_steady(motion, args.t_end, perturb=args.perturb, kick=args.kick,
                            t_eval=np.linspace(0.0, args.t_end, 1200))
@@ -580,6 +675,7 @@ def _run_animate(args) -> int:
 
 
 def _run_atlas(args) -> int:
+    _agg()
     from .atlas import build_atlas
 
     result = build_atlas(args.h, args.out, quick=args.quick, progress=not args.quiet)
@@ -589,6 +685,12 @@ def _run_atlas(args) -> int:
 
 # ---------------------------------------------------------------------------- main
 def build_parser() -> argparse.ArgumentParser:
+    """The parser of the ``rollingdisk`` command line (one subparser per subcommand).
+
+    Returns
+    -------
+    argparse.ArgumentParser
+    """
     parser = _Parser(prog="rollingdisk", description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     for add in (_add_derive, _add_steady, _add_thresholds, _add_simulate, _add_figures):
@@ -596,29 +698,104 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _say(line: str) -> None:
+    """One line on stderr (a message with line breaks is joined)."""
+    print(" ".join(str(line).split("\n")), file=sys.stderr, flush=True)
+
+
+def _prog(args) -> str:
+    command = getattr(args, "command", None)
+    return f"rollingdisk {command}" if command else "rollingdisk"
+
+
+#: errno values that mean the user's destination is full or read-only, whatever the file.
+_DESTINATION_ERRNOS = {"ENOSPC", "EDQUOT", "EFBIG", "EROFS"}
+
+
+def _on_user_path(exc: OSError, args) -> bool:
+    """Whether ``exc`` concerns the output the user named (``--out``): its folder, the
+    file or folder itself, or the temporary files written beside it."""
+    import errno
+
+    out = getattr(args, "out", None)
+    if out is None:
+        return False
+    if errno.errorcode.get(exc.errno) in _DESTINATION_ERRNOS:
+        return True
+    target = os.path.abspath(out)
+    folder = os.path.dirname(target)
+    for name in (exc.filename, exc.filename2):
+        if name is None:
+            continue
+        try:
+            path = os.path.abspath(os.fspath(name))
+            if os.path.commonpath([path, folder]) == folder:
+                return True
+        except (TypeError, ValueError):
+            continue
+    return False
+
+
+def _bug(args) -> int:
+    import traceback
+
+    traceback.print_exc()
+    _say(f"{_prog(args)}: internal error: this is a bug in rollingdisk, not a problem with "
+         "your input; please report it with the traceback above")
+    return 1
+
+
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run the command line ``argv`` (``sys.argv[1:]`` by default); return the exit status."""
+    """Run the command line ``argv`` and return the exit status.
+
+    Parameters
+    ----------
+    argv : sequence of str, optional
+        The arguments (``sys.argv[1:]`` by default).
+
+    Returns
+    -------
+    int
+        0 done; 2 bad input (one line on stderr); 1 a bug (traceback and one line);
+        130 interrupted (Ctrl-C); 143 terminated (SIGTERM).
+    """
     parser = build_parser()
+    args = None
     try:
-        args = parser.parse_args(argv)
-        if not getattr(args, "handler", None):
-            parser.print_help(sys.stderr)
-            return 2
         with terminate_as_exception():
+            try:
+                args = parser.parse_args(argv)
+            except _Exit as done:  # --help
+                return done.status
+            if not getattr(args, "handler", None):
+                parser.print_help(sys.stderr)
+                return 2
             return int(args.handler(args) or 0)
+    except KeyboardInterrupt:
+        _say("rollingdisk: interrupted")
+        return 130
     except Terminated:
-        print("rollingdisk: terminated", file=sys.stderr)
+        _say("rollingdisk: terminated")
         return 143
     except CLIError as exc:
-        print(str(exc), file=sys.stderr)
+        _say(str(exc))
         return 2
-    except ValueError as exc:
-        print(f"rollingdisk: error: {exc}", file=sys.stderr)
+    except INPUT_ERRORS as exc:
+        _say(f"{_prog(args)}: error: {exc}")
         return 2
-    except OSError as exc:  # an output path that cannot be written
+    except OSError as exc:
+        if not _on_user_path(exc, args):
+            return _bug(args)
         where = f"{exc.filename}: " if exc.filename else ""
-        print(f"rollingdisk: error: {where}{exc.strerror or exc}", file=sys.stderr)
+        _say(f"{_prog(args)}: error: {where}{exc.strerror or exc}")
         return 2
-    except KeyboardInterrupt:
-        print("rollingdisk: interrupted", file=sys.stderr)
-        return 130
+    except Exception as exc:
+        # an exception raised while cleaning up after Ctrl-C / SIGTERM: still an interruption
+        context = exc.__context__
+        while context is not None:
+            if isinstance(context, (KeyboardInterrupt, Terminated)):
+                interrupted = isinstance(context, KeyboardInterrupt)
+                _say("rollingdisk: interrupted" if interrupted else "rollingdisk: terminated")
+                return 130 if interrupted else 143
+            context = context.__context__
+        return _bug(args)

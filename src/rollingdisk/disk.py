@@ -13,9 +13,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from .errors import ParameterError, ParameterTypeError
 
-__all__ = ["Disk", "GROUNDS", "H_MAX", "check_ground", "check_h", "check_real", "h_tilde"]
+__all__ = ["Disk", "DEFAULT_H", "GROUNDS", "H_MAX", "check_ground", "check_h", "check_int",
+           "check_real", "h_tilde"]
 
 #: The two kinds of ground the theory covers: no slip, or no friction.
 GROUNDS = ("rough", "smooth")
@@ -23,6 +26,10 @@ GROUNDS = ("rough", "smooth")
 #: Largest half-thickness accepted (a bar 1e8 radii long): far beyond it h^4 and the
 #: like in the stability formulas leave floating-point range.
 H_MAX = 1e8
+
+#: The default disk of the command line and the atlas: close to a commercial Euler's disk
+#: (radius 37.5 mm, 12.7 mm thick: h = 6.35 / 37.5 = 0.17).
+DEFAULT_H = 0.17
 
 #: Standard gravity [m/s^2], the default physical gravity of a :class:`Disk`.
 STANDARD_GRAVITY = 9.80665
@@ -43,7 +50,7 @@ def check_real(name: str, value, *, low: float | None = None, high: float | None
     if isinstance(value, bool) or not isinstance(value, (int, float)) and not _is_numpy_real(value):
         raise ParameterTypeError(f"{name} must be a real number in {allowed}, got "
                                  f"{type(value).__name__} {value!r}")
-    x = float(value)
+    x = _as_float(value)
     if not math.isfinite(x):
         raise ParameterError(f"{name} must be a finite real number in {allowed}, got {x!r}")
     if low is not None and (x < low or (low_open and x == low)):
@@ -51,6 +58,56 @@ def check_real(name: str, value, *, low: float | None = None, high: float | None
     if high is not None and (x > high or (high_open and x == high)):
         raise ParameterError(f"{name} must lie in {allowed}, got {x!r}")
     return x
+
+
+def check_int(name: str, value, *, low: int | None = None, high: int | None = None) -> int:
+    """Return ``value`` as an int, or raise naming ``name`` and the allowed range.
+
+    Parameters
+    ----------
+    name : str
+        The parameter's name, for the message.
+    value : int
+        An integer (``numpy`` integers and integral floats such as ``60.0`` are accepted).
+    low, high : int, optional
+        Inclusive bounds.
+
+    Returns
+    -------
+    int
+
+    Raises
+    ------
+    ParameterTypeError
+        For a non-number (booleans and strings included).
+    ParameterError
+        For a fractional, non-finite or out-of-range value.
+
+    Examples
+    --------
+    >>> check_int("frames", 60.0, low=2, high=2000)
+    60
+    """
+    lo = "(-inf" if low is None else f"[{low:d}"
+    hi = "inf)" if high is None else f"{high:d}]"
+    allowed = f"{lo}, {hi}"
+    if isinstance(value, bool) or not isinstance(value, (int, float)) and not _is_numpy_real(value):
+        raise ParameterTypeError(f"{name} must be an integer in {allowed}, got "
+                                 f"{type(value).__name__} {value!r}")
+    x = _as_float(value)
+    if not math.isfinite(x) or x != math.floor(x):
+        raise ParameterError(f"{name} must be an integer in {allowed}, got {value!r}")
+    n = int(value)
+    if (low is not None and n < low) or (high is not None and n > high):
+        raise ParameterError(f"{name} must be an integer in {allowed}, got {n!r}")
+    return n
+
+
+def _as_float(value) -> float:
+    try:
+        return float(value)
+    except OverflowError:  # an int beyond floating-point range
+        return math.inf if value > 0 else -math.inf
 
 
 def _is_numpy_real(value) -> bool:
@@ -68,9 +125,32 @@ def check_h(h) -> float:
     return check_real("h", h, low=0.0, high=H_MAX)
 
 
-def h_tilde(h: float, theta: float) -> float:
-    """``h~ = h sgn(theta)``: which rim edge touches the plane (eq. 4); 0 at ``theta = 0``."""
-    return h if theta > 0 else -h if theta < 0 else 0.0
+def h_tilde(h, theta):
+    """``h~ = h sgn(theta)``: which rim edge touches the plane (eq. 4).
+
+    Parameters
+    ----------
+    h : float or array_like
+        Half-thickness.
+    theta : float or array_like
+        Inclination [rad]; broadcast with ``h``.
+
+    Returns
+    -------
+    float or ndarray
+        ``+h`` for ``theta >= 0`` (``theta = 0`` counts as the limit ``0+``), ``-h`` for
+        ``theta < 0``: the convention of the kernels, defined once in
+        :func:`rollingdisk.equations._geometry`.
+
+    Examples
+    --------
+    >>> h_tilde(0.2, -0.5), h_tilde(0.2, 0.0)
+    (-0.2, 0.2)
+    """
+    from .equations import _geometry  # equations imports this module
+
+    ht = _geometry(h, theta)[0]
+    return float(ht) if np.ndim(ht) == 0 else ht
 
 
 def check_ground(ground) -> str:

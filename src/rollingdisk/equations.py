@@ -69,8 +69,19 @@ def state_index(ground: str, name: str) -> int:
 # kernels: plain arithmetic, numba-compilable, element-wise on arrays
 # ---------------------------------------------------------------------------------------
 def _geometry(h, theta):
-    """``h~, sin, cos, tan, y_P, z_P`` at inclination ``theta`` (eq. 4, a = 1)."""
-    ht = h * np.sign(theta)
+    """``h~, sin, cos, tan, y_P, z_P`` at inclination ``theta`` (eq. 4, a = 1).
+
+    This is the library's one definition of ``h~ = h sgn(theta)`` (which rim edge touches
+    the plane); every other place takes ``h~`` from here (:func:`rollingdisk.disk.h_tilde`,
+    the maps of :mod:`rollingdisk.steady` and :mod:`rollingdisk._stability`).  Convention:
+    ``theta = 0`` counts as the limit ``theta -> 0+``, so ``h~ = +h`` there (and ``-0.0``
+    too).  For ``h = 0`` nothing depends on it; for ``h > 0``, ``theta = 0`` (the disk on
+    the line of its rim edge) is outside the theory, and a simulation stops there (the
+    edge-contact guard).  Only the real part of ``theta`` decides the sign, so that the
+    complex-step derivatives of :func:`rollingdisk.reduced_jacobian` pass through, and the
+    expression compiles with numba, element-wise on arrays.
+    """
+    ht = h * np.sign(np.sign(np.real(theta)) + 0.5)  # sgn with sgn(0) = +1
     s = np.sin(theta)
     c = np.cos(theta)
     y_P = s - ht * c  # eq. (4)

@@ -14,10 +14,15 @@ from pathlib import Path
 
 from . import plotting
 from .disk import check_real
-from .errors import ParameterError
+from .errors import ParameterError, ParameterTypeError
 
-__all__ = ["FIGURE_HS", "figure4", "figure5", "figure6", "figure7", "figure8",
+__all__ = ["FIGURE_HS", "SCALE_MAX", "figure4", "figure5", "figure6", "figure7", "figure8",
            "paper_figures", "FIGURES"]
+
+#: Largest grid resolution factor of :func:`paper_figures` (4: about 1000 x 800 cells per
+#: map, 360 x 360 on the surfaces; beyond it the work and memory grow without a visible
+#: gain).
+SCALE_MAX = 4.0
 
 #: The four thicknesses of Figure 4.
 FIGURE_HS = (0.0, 0.17, math.sqrt(3.0) / 2.0, 5.0)
@@ -29,9 +34,25 @@ def _figure(figsize):
     return Figure(figsize=figsize)
 
 
+def _check_scale(scale) -> float:
+    return check_real("scale", scale, low=0.0, high=SCALE_MAX, low_open=True)
+
+
 def figure4(scale: float = 1.0):
     """Figure 4: ``Omega0^2 > 0`` and ``varpi^2 > 0`` in ``(theta0, r_C)``, rough ground,
-    for ``h = 0, 0.17, sqrt(3)/2, 5``.  ``scale`` multiplies the grid resolution."""
+    for ``h = 0, 0.17, sqrt(3)/2, 5``.
+
+    Parameters
+    ----------
+    scale : float
+        Grid resolution factor in ``(0, 4]`` (:data:`SCALE_MAX`).
+
+    Returns
+    -------
+    matplotlib Figure
+        With ``fig.maps``, the :class:`~rollingdisk.plotting.MapPlot` of each panel.
+    """
+    scale = _check_scale(scale)
     fig = _figure((10.0, 8.0))
     axs = fig.subplots(2, 2)
     n = (max(20, int(240 * scale)), max(20, int(200 * scale)))
@@ -48,6 +69,7 @@ def figure4(scale: float = 1.0):
 
 
 def _all_omega30_figure(ground: str, scale: float, zoom: tuple[tuple, tuple]):
+    scale = _check_scale(scale)
     fig = _figure((11.0, 4.6))
     axs = fig.subplots(1, 2)
     n = (max(20, int(240 * scale)), max(20, int(200 * scale)))
@@ -68,16 +90,39 @@ def _all_omega30_figure(ground: str, scale: float, zoom: tuple[tuple, tuple]):
 
 def figure5(scale: float = 1.0):
     """Figure 5: rough ground, region stable for every ``omega30`` in ``(theta0 [deg], h)``
-    (condition 46), with the small region near ``theta0 = 0`` magnified."""
+    (condition 46), with the small region near ``theta0 = 0`` magnified.
+
+    Parameters
+    ----------
+    scale : float
+        Grid resolution factor in ``(0, 4]`` (:data:`SCALE_MAX`).
+
+    Returns
+    -------
+    matplotlib Figure
+        With ``fig.maps``, the :class:`~rollingdisk.plotting.MapPlot` of each panel.
+    """
     return _all_omega30_figure("rough", scale, ((0.0, 1.0), (0.6, 1.05)))
 
 
 def figure7(scale: float = 1.0):
-    """Figure 7: as Figure 5 on smooth ground (condition 59)."""
+    """Figure 7: as Figure 5 on smooth ground (condition 59).
+
+    Parameters
+    ----------
+    scale : float
+        Grid resolution factor in ``(0, 4]`` (:data:`SCALE_MAX`).
+
+    Returns
+    -------
+    matplotlib Figure
+        With ``fig.maps``, the :class:`~rollingdisk.plotting.MapPlot` of each panel.
+    """
     return _all_omega30_figure("smooth", scale, ((0.0, 15.0), (0.3, 1.0)))
 
 
 def _surface_figure(ground: str, scale: float):
+    scale = _check_scale(scale)
     fig = _figure((7.0, 5.8))
     ax = fig.add_subplot(1, 1, 1, projection="3d")
     n = (max(16, int(90 * scale)), max(16, int(90 * scale)))
@@ -88,12 +133,34 @@ def _surface_figure(ground: str, scale: float):
 
 def figure6(scale: float = 1.0):
     """Figure 6: rough ground, the surface ``varpi^2 = 0`` (eq. 45) in
-    ``(theta0, h, omega30)``; theta0 in radians."""
+    ``(theta0, h, omega30)``; theta0 in radians.
+
+    Parameters
+    ----------
+    scale : float
+        Grid resolution factor in ``(0, 4]`` (:data:`SCALE_MAX`).
+
+    Returns
+    -------
+    matplotlib Figure
+        With ``fig.maps``, the :class:`~rollingdisk.plotting.MapPlot` of each panel.
+    """
     return _surface_figure("rough", scale)
 
 
 def figure8(scale: float = 1.0):
-    """Figure 8: smooth ground, the surface ``varpi^2 = 0`` (eq. 55)."""
+    """Figure 8: smooth ground, the surface ``varpi^2 = 0`` (eq. 55).
+
+    Parameters
+    ----------
+    scale : float
+        Grid resolution factor in ``(0, 4]`` (:data:`SCALE_MAX`).
+
+    Returns
+    -------
+    matplotlib Figure
+        With ``fig.maps``, the :class:`~rollingdisk.plotting.MapPlot` of each panel.
+    """
     return _surface_figure("smooth", scale)
 
 
@@ -103,33 +170,63 @@ FIGURES: dict[str, Callable] = {"fig4": figure4, "fig5": figure5, "fig6": figure
 
 def paper_figures(out_dir, *, scale: float = 1.0, dpi: int = 110,
                   only=None, progress: Callable[[str], None] | None = None) -> list[Path]:
-    """Write ``fig4.png`` ... ``fig8.png`` into ``out_dir``; return their paths.
+    """Write ``fig4.png`` ... ``fig8.png`` into the folder ``out_dir``; return their paths.
+
+    The folder is built under a temporary name and swapped in at the end
+    (:func:`rollingdisk._files.atomic_dir`), so it appears whole or not at all; the figures
+    of an earlier run that ``only`` leaves out are carried over.  An existing ``out_dir``
+    is replaced only if it holds nothing but ``figN.png`` files.
 
     Parameters
     ----------
+    out_dir : path-like
+        The folder to write; its parent folder must exist.
     scale : float
-        Grid resolution factor (``0.2`` for a quick low-resolution check).
+        Grid resolution factor in ``(0, 4]`` (:data:`SCALE_MAX`; ``0.2`` for a quick
+        low-resolution check).
     dpi : int
-        Resolution of the PNG files.
+        Resolution of the PNG files, in :data:`rollingdisk.plotting.DPI_RANGE`.
     only : iterable of str, optional
         A subset of ``"fig4" ... "fig8"``.
     progress : callable, optional
         Called with a short message before each figure.
+
+    Returns
+    -------
+    list of Path
+        The files written, in ``out_dir``.
+
+    Raises
+    ------
+    ParameterError
+        For an argument out of range or a folder that cannot be written (before any work).
     """
-    scale = check_real("scale", scale, low=0.0, low_open=True)
-    dpi = int(check_real("dpi", dpi, low=1.0))
-    names = list(FIGURES) if only is None else list(only)
+    import shutil
+
+    from ._files import atomic_dir, check_replaceable
+
+    scale = _check_scale(scale)
+    dpi = plotting.check_dpi(dpi)
+    if isinstance(only, str):
+        only = [only]
+    try:
+        names = list(FIGURES) if only is None else list(dict.fromkeys(only))
+    except TypeError:
+        raise ParameterTypeError(f"only must be a list of figure names, got {only!r}") from None
     for name in names:
         if name not in FIGURES:
             raise ParameterError(f"figure must be one of {tuple(FIGURES)}, got {name!r}")
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
-    paths = []
-    for name in names:
-        if progress:
-            progress(f"{name} ...")
-        fig = FIGURES[name](scale)
-        path = out / f"{name}.png"
-        fig.savefig(path, dpi=dpi)
-        paths.append(path)
-    return paths
+    if progress is not None and not callable(progress):
+        raise ParameterTypeError(f"progress must be callable, got {progress!r}")
+    files = [f"{name}.png" for name in FIGURES]
+    target = check_replaceable(out_dir, files, name="out_dir")
+    with atomic_dir(target) as tmp:
+        for name in names:
+            if progress:
+                progress(f"{name} ...")
+            fig = FIGURES[name](scale)
+            fig.savefig(tmp / f"{name}.png", dpi=dpi, format="png")
+        for file in files:  # the figures of an earlier run that this one leaves alone
+            if file[:-4] not in names and (target / file).is_file():
+                shutil.copy2(target / file, tmp / file)
+    return [target / f"{name}.png" for name in names]

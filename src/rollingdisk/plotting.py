@@ -2,12 +2,17 @@
 
 This module sits outside the numeric core: it calls :mod:`rollingdisk.steady`,
 :mod:`rollingdisk._stability` and :mod:`rollingdisk.equations` and draws what they return.
-It never re-implements a formula of the paper.  matplotlib is imported only when a plot
-function is called; every function takes ``ax=None`` (a new figure is made when it is
-``None``), returns what it drew and never calls ``plt.show()``.
+It never re-implements a formula of the paper, and what a map shows (which steady
+motions exist, which are stable) is computed in :mod:`rollingdisk.regions`.  matplotlib is
+imported only when a plot function is called; every function takes ``ax=None`` (a new
+figure is made when it is ``None``), returns what it drew and never calls ``plt.show()``.
+
+About 600 lines on purpose: one function per kind of map or trajectory plot, sharing the
+class colours, labels and file helpers at the top (split by plot kind, they would be
+scattered over several modules).
 
 Map functions return a :class:`MapPlot`: the axes, the grid, the values on the grid (a
-class code or ``varpi2``) and the artists.  Class codes are
+class code of :mod:`rollingdisk.regions` or ``varpi2``) and the artists.  Class codes are
 
 * ``NO_MOTION = 0``: no steady motion (``Omega0^2 <= 0``),
 * ``UNSTABLE = 1``: a steady motion exists but ``varpi^2 < 0``,
@@ -21,22 +26,23 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .disk import check_ground, check_h, check_real
-from .errors import ParameterError
+from .disk import check_ground, check_h, check_int, check_real
+from .errors import ParameterError, ParameterTypeError
+from .regions import NO_MOTION, STABLE, UNSTABLE, existence_codes, varpi2_zero_surface
 
 __all__ = [
-    "NO_MOTION",
-    "UNSTABLE",
-    "STABLE",
+    "DPI_RANGE",
+    "IMAGE_FORMATS",
+    "check_dpi",
+    "image_format",
+    "save_figure",
     "CLASS_COLORS",
     "MapPlot",
-    "existence_codes",
     "plot_existence_map",
     "plot_stability_map",
     "plot_all_omega30_stable",
     "plot_varpi2_surface",
     "plot_varpi2_curves",
-    "varpi2_zero_surface",
     "plot_paths",
     "plot_theta",
     "plot_energy_error",
@@ -45,7 +51,6 @@ __all__ = [
     "trajectory_series",
 ]
 
-NO_MOTION, UNSTABLE, STABLE = 0, 1, 2
 #: Colours of the classes, as in the paper's Figure 4: dark, gray, white.
 CLASS_COLORS = ("#3a3a3a", "#b4b4b4", "#ffffff")
 CLASS_LABELS = ("no steady motion ($\\Omega_0^2<0$)", "possible, unstable ($\\varpi^2<0$)",
@@ -91,6 +96,93 @@ class MapPlot:
         return float(np.mean(v[sel] == code)) if sel.any() else float("nan")
 
 
+# ------------------------------------------------------------------------------ files
+#: Resolutions accepted for images and animations, in dots per inch: below 20 the text is
+#: unreadable, above 600 a figure of the library runs to hundreds of megabytes.
+DPI_RANGE = (20, 600)
+
+#: Image formats :func:`save_figure` writes (matplotlib's own backends, no LaTeX needed).
+IMAGE_FORMATS = ("png", "pdf", "svg")
+
+
+def check_dpi(dpi, name: str = "dpi") -> int:
+    """``dpi`` as an int in :data:`DPI_RANGE`, or :class:`~rollingdisk.ParameterError`.
+
+    Parameters
+    ----------
+    dpi : int
+        Dots per inch.
+    name : str
+        The parameter's name for the message.
+
+    Returns
+    -------
+    int
+    """
+    return check_int(name, dpi, low=DPI_RANGE[0], high=DPI_RANGE[1])
+
+
+def image_format(path, name: str = "out") -> str:
+    """The image format of ``path`` by its suffix, one of :data:`IMAGE_FORMATS`.
+
+    Parameters
+    ----------
+    path : path-like
+        The image file.
+    name : str
+        The parameter's name for the message.
+
+    Returns
+    -------
+    str
+        ``"png"``, ``"pdf"`` or ``"svg"``.
+
+    Raises
+    ------
+    ParameterError
+        For any other suffix (or none).
+    """
+    import os
+
+    try:
+        suffix = os.path.splitext(os.fspath(path))[1].lower().lstrip(".")
+    except TypeError:
+        raise ParameterTypeError(f"{name} must be a file name, got {type(path).__name__} "
+                                 f"{path!r}") from None
+    if suffix not in IMAGE_FORMATS:
+        raise ParameterError(f"{name} must end in one of "
+                             f"{', '.join('.' + f for f in IMAGE_FORMATS)}, got {str(path)!r}")
+    return suffix
+
+
+def save_figure(fig, path, *, dpi: int = 110):
+    """Write ``fig`` to ``path`` whole or not at all (a temporary file, renamed at the end).
+
+    Parameters
+    ----------
+    fig : matplotlib Figure
+    path : path-like
+        ``.png``, ``.pdf`` or ``.svg`` (:data:`IMAGE_FORMATS`); its folder must exist.
+    dpi : int
+        Resolution, in :data:`DPI_RANGE`.
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
+    from pathlib import Path
+
+    from ._files import atomic_file, check_writable
+
+    fmt = image_format(path)
+    dpi = check_dpi(dpi)
+    target = check_writable(path, name="out")
+    with atomic_file(target, mode=None) as tmp:
+        fig.savefig(tmp, dpi=dpi, format=fmt)
+    return Path(path)
+
+
 # ------------------------------------------------------------------------------ helpers
 def _pyplot():
     import matplotlib.pyplot as plt
@@ -128,27 +220,6 @@ def _theta_grid(n, theta_max=None):
 
 
 # ------------------------------------------------------------------- existence / stability
-def existence_codes(h: float, theta0, r_C) -> np.ndarray:
-    """Class codes of the rough-ground steady circle with given ``theta0`` and ``r_C``.
-
-    ``NO_MOTION`` where ``Omega0^2`` of eq. (31) is not positive, else ``STABLE`` or
-    ``UNSTABLE`` by the sign of ``varpi^2`` (eq. 47 route, as corrected in the library).
-    Arrays broadcast.
-    """
-    from ._stability import varpi2_rough_rC
-    from .steady import Omega0_sq
-
-    theta0, r_C = np.broadcast_arrays(np.asarray(theta0, float), np.asarray(r_C, float))
-    with np.errstate(all="ignore"):
-        O2 = np.asarray(Omega0_sq(h, theta0, r_C), float)
-        exists = np.isfinite(O2) & (O2 > 0)
-        v2 = np.asarray(varpi2_rough_rC(h, theta0, r_C), float)
-    codes = np.full(theta0.shape, NO_MOTION, dtype=np.int8)
-    codes[exists] = UNSTABLE
-    codes[exists & np.isfinite(v2) & (v2 > 0)] = STABLE
-    return codes
-
-
 def _default_r_C_range(h: float, scale: str) -> tuple[float, float]:
     R = max(1.0, 0.5 * h) if scale == "linear" else 20.0
     return -R, R
@@ -356,26 +427,6 @@ def plot_all_omega30_stable(ground: str, ax=None, *, n=(240, 200),
     if asymptote or mark_h is not None:
         ax.legend(loc="upper left", fontsize="x-small", framealpha=0.9)
     return MapPlot(ax, deg, hh, ok, artists)
-
-
-def varpi2_zero_surface(h, ground: str, theta0):
-    """The roots ``omega30 > 0`` of ``varpi^2 = 0`` (eqs. 45 / 55) at each ``(h, theta0)``.
-
-    ``varpi^2 omega30^2`` is, for fixed ``(theta0, h)``, a quadratic in ``omega30^2`` over
-    a positive denominator; its roots are :func:`rollingdisk.stability.critical_omega30_sq`
-    (the library's corrected eq. (45)).
-
-    Returns
-    -------
-    (lower, upper) : ndarrays
-        ``omega30`` of the lower and upper sheet, NaN where there is no positive root.
-    """
-    from ._stability import critical_omega30_sq
-
-    check_ground(ground)
-    lower, upper = critical_omega30_sq(h, ground, theta0)
-    with np.errstate(all="ignore"):
-        return np.sqrt(np.where(lower > 0, lower, np.nan)), np.sqrt(upper)
 
 
 def _close_fold(ground, H, TH, lo, hi):

@@ -410,11 +410,6 @@ def straight_line(disk: Disk, ground: str, omega0: float, *, v_Cx0: float | None
 # ---------------------------------------------------------------------------------------
 # vectorized forms for maps
 # ---------------------------------------------------------------------------------------
-def _h_tilde_map(h, theta0):
-    """``h~`` for maps: ``theta0 = 0`` is taken as the limit ``theta0 -> 0+``."""
-    return h * np.where(theta0 < 0, -1.0, 1.0)
-
-
 def _map_domain(h, theta0):
     return (h >= 0) & (np.abs(theta0) < np.pi / 2)
 
@@ -429,7 +424,7 @@ def Omega0_sq(h, theta0, r_C):
     """
     h, theta0, r_C = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (h, theta0, r_C)))
     with np.errstate(all="ignore"):
-        ht = _h_tilde_map(h, theta0)
+        ht = h_tilde(h, theta0)
         s, c = np.sin(theta0), np.cos(theta0)
         p = s / c
         N, A, B = _rough_Omega0_sq_parts(h, ht, s, c, p)
@@ -448,7 +443,7 @@ def r_C_star(h, theta0):
     """
     h, theta0 = np.broadcast_arrays(np.asarray(h, dtype=float), np.asarray(theta0, dtype=float))
     with np.errstate(all="ignore"):
-        ht = _h_tilde_map(h, theta0)
+        ht = h_tilde(h, theta0)
         s, c = np.sin(theta0), np.cos(theta0)
         N, A, B = _rough_Omega0_sq_parts(h, ht, s, c, s / c)
         out = -A / B
