@@ -74,3 +74,11 @@ def test_h_tilde_and_static_equilibrium():
     assert disk.h_tilde(0.2) == 0.3 and disk.h_tilde(-0.2) == -0.3
     y_P, _ = disk.contact_point(disk.static_equilibrium_theta)
     assert abs(y_P) < 1e-15  # P right below C in the SE position (Figure 3b)
+
+
+@pytest.mark.parametrize("measure", [rd.energy_drift, rd.oscillation_frequency, rd.growth_rate])
+@pytest.mark.parametrize("bad", [None, 1.0, "traj", np.zeros((8, 3))])
+def test_measurements_need_a_trajectory(measure, bad):
+    """A measurement given anything but a Trajectory is a TypeError naming traj."""
+    with pytest.raises(rd.ParameterTypeError, match="traj must be a rollingdisk.Trajectory"):
+        measure(bad)

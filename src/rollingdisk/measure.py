@@ -21,6 +21,14 @@ from .trajectory import Trajectory
 __all__ = ["energy_drift", "oscillation_frequency", "growth_rate", "fit_circle",
            "TheoryComparison", "compare_with_theory", "LINEAR_RANGE"]
 
+def _check_trajectory(traj) -> Trajectory:
+    """``traj`` itself, or :class:`ParameterTypeError` if it is not a :class:`Trajectory`."""
+    if not isinstance(traj, Trajectory):
+        raise ParameterTypeError(f"traj must be a rollingdisk.Trajectory, got "
+                                 f"{type(traj).__name__}")
+    return traj
+
+
 def energy_drift(traj: Trajectory) -> float:
     """Largest relative change of the energy (eq. 13) along ``traj``.
 
@@ -37,7 +45,7 @@ def energy_drift(traj: Trajectory) -> float:
     float
         ``max |E(t) - E(t0)| / |E(t0)|`` over the stored points, ``E`` of eq. (13).
     """
-    E = traj.E
+    E = _check_trajectory(traj).E
     return float(np.max(np.abs(E - E[0])) / max(abs(E[0]), np.finfo(float).tiny))
 
 
@@ -97,7 +105,7 @@ def oscillation_frequency(traj: Trajectory, *, min_periods: int = 2) -> float | 
         The angular frequency ``2 pi / period``; None if ``theta`` crosses its mean upward
         fewer than ``min_periods + 1`` times.
     """
-    t = traj.t
+    t = _check_trajectory(traj).t
     th = traj.theta
     if t.size < 3:
         return None
@@ -145,6 +153,7 @@ def growth_rate(traj: Trajectory, *, theta_ref: float | None = None,
     """
     from scipy.optimize import minimize_scalar
 
+    _check_trajectory(traj)
     ref = theta_ref if theta_ref is not None else (
         traj.theta_ref if traj.theta_ref is not None else float(traj.theta[0]))
     dev = np.abs(traj.theta - ref)
