@@ -453,15 +453,16 @@ def _coulomb_rolling(h, c_roll, c_pivot, c_air, y):
     return dy, F_x, F_y, F_z, P1, P2, P3
 
 
-def _coulomb_sliding(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y):
+def _coulomb_sliding(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_eps=0.0):
     """Sliding mode at a Coulomb state: ``(dy[0:10], F_x, F_y, F_z, P_slip, P_roll,
     P_pivot, P_air)``.
 
     The friction direction is ``e = sigma u/|u|`` with ``sigma = sgn(u . ref)`` for the
     inertial reference direction ``ref`` (the slip direction when the step began): equal
     to ``u/|u|`` while the slip keeps its direction, and the smooth continuation of the
-    sliding solution through ``u = 0``, where the hybrid driver stops it (an event).  At
-    ``u = 0`` exactly, ``e = ref``."""
+    sliding solution through ``u = 0``, where the hybrid driver stops it (an event).  Where
+    ``|u| <= u_eps`` (the slip just started from rest, its direction not yet resolved
+    above rounding), ``e = ref``."""
     psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
     cp = np.cos(psi)
@@ -470,7 +471,7 @@ def _coulomb_sliding(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y):
     n = np.sqrt(u_x * u_x + u_y * u_y)
     r_x = ref_X * cp + ref_Y * sp  # ref in Cxyz
     r_y = -ref_X * sp + ref_Y * cp
-    if n > 0.0:
+    if n > u_eps and n > 0.0:
         sig = 1.0
         if u_x * r_x + u_y * r_y < 0.0:
             sig = -1.0
