@@ -35,10 +35,10 @@ from scipy.integrate import DOP853
 from scipy.optimize import brentq
 
 from . import equations as _eq
+from ._simulate import Trajectory, Transition, _check_state
 from .disk import Disk, check_real
 from .errors import ParameterError
 from .ground import Coulomb
-from ._simulate import Trajectory, Transition, _check_state
 
 __all__ = ["simulate_coulomb", "slip_direction", "energy_balance", "DISSIPATION_TERMS"]
 
@@ -59,7 +59,7 @@ STICK_TOL = 1e-6
 def _slip_accel(h, mu_k, coeffs, y, e_x, e_y):
     """Slip acceleration ``du/dt`` (Cxyz) at a state with ``u = 0``, sliding with friction
     ``-mu_k F_z e`` (``e`` in Cxyz): eq. (6) differentiated along (8), (9), (11)."""
-    psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
+    theta, w1, w2, w3 = y[5], y[7], y[8], y[9]
     ht, s, c, p, y_P, z_P = _eq._geometry(h, theta)
     M = _eq._coulomb_moments(*coeffs, theta, w1, w2, w3)
     d1, d2, d3, F_x, F_y, F_z = _eq._sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3, *M)
