@@ -229,3 +229,14 @@ def test_falls_flat_is_terminal():
     tr = simulate_coulomb(disk, Coulomb(0.5), (0, 50), [0, 0, 0, 0, 0, 0.3, 0, 0, 0, 0])
     assert tr.status in ("fell-flat", "lift-off")
     assert tr.t_event == tr.t[-1] and tr.t[-1] < 50
+
+
+def test_nonfinite_and_alpha_min_arguments():
+    disk = rd.Disk(0.0)
+    y = [0, 0, 1, 0, 0, 0.5, 0, 0, 0, 0]
+    with pytest.raises(ParameterError, match="alpha_min"):
+        simulate_coulomb(disk, Coulomb(0.2), (0, 1), y, alpha_min=-1.0)
+    tr = simulate_coulomb(disk, Coulomb(0.5), (0, 50), [0, 0, 0, 0, 0, 0.3, 0, 0, 0, 0],
+                          alpha_min=0.2)
+    assert tr.status == "fell-flat"
+    assert abs(0.5 * math.pi - abs(tr.theta[-1]) - 0.2) < 1e-12

@@ -9,16 +9,18 @@ only numpy and scipy (and numba, lazily, when the integrator first runs); ``symb
 ``plotting``, ``figures``, ``animation``, ``atlas`` and ``cli`` are the edges that use it.
 """
 
-from . import _simulate, _stability, disk, equations, errors, steady
+from . import _hybrid, _simulate, _stability, disk, equations, errors, ground, steady
+from ._hybrid import *  # noqa: F403
 from ._simulate import *  # noqa: F403
 from ._stability import *  # noqa: F403
 from .disk import *  # noqa: F403
 from .equations import *  # noqa: F403
 from .errors import *  # noqa: F403
+from .ground import *  # noqa: F403
 from .steady import *  # noqa: F403
 
 __version__ = "0.1.0"
 
 __all__ = [*errors.__all__, *disk.__all__, *equations.__all__, *steady.__all__, *_stability.__all__,
-           *_simulate.__all__]
-del _simulate, _stability
+           *_simulate.__all__, *ground.__all__, *_hybrid.__all__]
+del _simulate, _stability, _hybrid

@@ -120,10 +120,22 @@ def energy_balance(traj: Trajectory) -> float:
     return float(np.max(np.abs(total - total[0])) / max(abs(total[0]), 1.0))
 
 
+class _Singular(ArithmeticError):
+    """The right-hand side left floating-point range (scipy's DOP853 would loop on NaN)."""
+
+
+def _finite(t, out):
+    if not np.all(np.isfinite(out)):
+        raise _Singular(f"t = {t:.12g}")
+    return out
+
+
 class _Run:
     """One hybrid run: the right-hand sides and event functions of both modes."""
 
-    def __init__(self, disk, ground):
+    def __init__(self, disk, ground, alpha_min=0.0):
+        self.alpha_min = alpha_min
+        self.side = 1.0  # sgn(theta) on the current segment (edge-contact event)
         self.h = disk.h
         self.g = ground
         self.coeffs = ground.coefficients
@@ -137,13 +149,13 @@ class _Run:
             def f(t, z):
                 self.n_rhs += 1
                 dy, F_x, F_y, F_z, P1, P2, P3 = _eq._coulomb_rolling(h, *cf, z)
-                return np.array([*dy, 0.0, -P1, -P2, -P3])
+                return _finite(t, np.array([*dy, 0.0, -P1, -P2, -P3]))
         else:
             def f(t, z):
                 self.n_rhs += 1
                 dy, F_x, F_y, F_z, P0, P1, P2, P3 = _eq._coulomb_sliding(
                     h, g.mu_k, *cf, z, self.ref[0], self.ref[1], U_EPS)
-                return np.array([*dy, -P0, -P1, -P2, -P3])
+                return _finite(t, np.array([*dy, -P0, -P1, -P2, -P3]))
         return f
 
     def contact(self, mode, z):
@@ -163,7 +175,8 @@ class _Run:
         F_t, F_z, along = self.contact(mode, z)
         end = self.g.mu_s * F_z - F_t if mode == ROLLING else along
         theta = z[5]
-        return [end, F_z, abs(theta) if self.h > 0 else 1.0, 0.5 * math.pi - abs(theta)]
+        return [end, F_z, theta * self.side if self.h > 0 else 1.0,
+                0.5 * math.pi - abs(theta) - self.alpha_min]
 
 
 def _inertial_slip(h, z):
@@ -174,7 +187,7 @@ def _inertial_slip(h, z):
 def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *,
                      rtol: float = 1e-11, atol: float = 1e-12, max_step: float = math.inf,
                      max_steps: int = 2_000_000, max_transitions: int = 10_000,
-                     slip_tol: float = 1e-12, guards: bool = True,
+                     slip_tol: float = 1e-12, alpha_min: float = 1e-8, guards: bool = True,
                      progress: Callable[[float], None] | None = None) -> Trajectory:
     """Integrate the disk on Coulomb ground: rolling and sliding with located transitions.
 
@@ -197,9 +210,15 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     max_step : float
         Largest step.
     max_steps, max_transitions : int
-        Budgets; beyond either the run stops with status ``"failed"`` and says why.
+        Budgets of steps and of mode events (transitions, and slip reversals or turns that
+        restart the integrator); beyond either the run stops with status ``"failed"`` and
+        says why.
     slip_tol : float
         Relative slip below which the initial state counts as rolling.
+    alpha_min : float
+        The disk counts as fallen flat when its tilt ``alpha = pi/2 - |theta|`` reaches
+        ``alpha_min`` (``>= 0``): near ``alpha = 0`` the precession rate grows without
+        bound (Euler's disk, a finite-time singularity) and the steps would collapse.
     guards : bool
         Stop at lift-off, edge contact and falling flat (default).
     progress : callable, optional
@@ -235,12 +254,13 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     if max_step != math.inf:
         max_step = check_real("max_step", max_step, low=0.0, low_open=True)
     slip_tol = check_real("slip_tol", slip_tol, low=0.0)
+    alpha_min = check_real("alpha_min", alpha_min, low=0.0, high=0.5 * math.pi, high_open=True)
     for name, v in (("max_steps", max_steps), ("max_transitions", max_transitions)):
         if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
             raise ParameterError(f"{name} must be an integer >= 1, got {v!r}")
 
     h = disk.h
-    run = _Run(disk, ground)
+    run = _Run(disk, ground, alpha_min)
     z = np.concatenate([y, np.zeros(4)])
     transitions: list[Transition] = []
     ts, zs, modes = [t0], [], []
@@ -264,10 +284,13 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
 
     status, message, t_event = "completed", "", None
     n_steps = 0
+    n_mode_events = 0
+    last_turn = None
     next_report = 0.01
     wall0 = time.perf_counter()
     t = t0
     while True:  # one mode segment per pass
+        run.side = 1.0 if z[5] >= 0 else -1.0
         solver = DOP853(run.rhs(mode), t, z, t1, rtol=rtol, atol=atol, max_step=max_step)
         g_old = run.events(mode, z)
         switched = False
@@ -277,12 +300,24 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
                 message = (f"step budget exhausted: {max_steps} steps by t = {solver.t:.12g}; "
                            "raise max_steps or shorten t_span")
                 break
-            msg = solver.step()
+            try:
+                with np.errstate(all="ignore"):
+                    msg = solver.step()
+            except _Singular as exc:
+                status = "failed"
+                message = (f"the equations became singular at {exc} (a non-finite right-hand "
+                           f"side, theta = {solver.y[5]:.6g} at the step start)")
+                break
             n_steps += 1
             if solver.status == "failed":
                 status = "failed"
                 message = (f"the integrator gave up at t = {solver.t:.12g} ({msg}): step sizes "
                            "collapsed")
+                break
+            if not np.all(np.isfinite(solver.y)):
+                status = "failed"
+                message = (f"the state left floating-point range at t = {solver.t:.12g} "
+                           "(the motion became singular)")
                 break
             ta, tb = solver.t_old, solver.t
             sol = solver.dense_output()
@@ -313,15 +348,22 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
                 t_event = t
                 message = _message(status, t, h)
                 break
-            if len(transitions) >= max_transitions:
+            n_mode_events += 1
+            if n_mode_events > max_transitions:
                 status = "failed"
-                message = (f"transition budget exhausted: {max_transitions} mode changes by "
+                message = (f"transition budget exhausted: {max_transitions} mode events by "
                            f"t = {t:.12g} (sticking and slipping chatter?)")
                 break
             if mode == SLIDING:
                 U = _inertial_slip(h, z)
                 n = math.hypot(*U)
                 if n > STICK_TOL * (1.0 + math.hypot(z[2], z[3])):
+                    if last_turn is not None and t - last_turn <= 1e-12 * (1.0 + abs(t)):
+                        status = "failed"
+                        message = (f"stuck at t = {t:.12g}: the slip direction turned twice at "
+                                   "the same time (a discontinuity of the equations)")
+                        break
+                    last_turn = t
                     # u turned across the reference direction without vanishing: a new
                     # reference, no transition
                     run.ref = (U[0] / n, U[1] / n)
@@ -382,6 +424,15 @@ def _first_event(run, mode, sol, ta, tb, g_old, edge, guards):
                 if best is None or te < best[1]:
                     best = (k, te)
         if best is not None:
+            k, te = best
+            if k != 2 and active[2] and prev[2] > 0.0 and gi[2] <= 0.0:
+                # theta crossing 0 flips h~ and makes u and F jump: an event of the mode
+                # found at that jump is the edge contact itself
+                te2 = ts[i] if gi[2] == 0.0 else brentq(
+                    lambda s: run.events(mode, np.asarray(sol(s)))[2], ts[i - 1], ts[i],
+                    xtol=1e-15, rtol=8.9e-16, maxiter=200)
+                if te2 - te <= 1e-9 * (1.0 + abs(te2)):
+                    return 2, te2
             return best
         prev = gi
     return None
@@ -394,4 +445,5 @@ def _message(status, t, h):
     if status == "edge-contact":
         return (f"edge contact at t = {t:.12g}: theta reached 0 with h = {h:g} > 0, the disk "
                 "lands on its other rim edge (an impact, outside the model)")
-    return f"fell flat at t = {t:.12g}: |theta| reached pi/2, the disk lies on the plane"
+    return (f"fell flat at t = {t:.12g}: the tilt pi/2 - |theta| reached alpha_min, the disk "
+            "lies on the plane")

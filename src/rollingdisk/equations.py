@@ -344,7 +344,7 @@ def _coulomb_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3):
     """``M0, M1`` (6 floats, Cxyz) of the dissipative moments, ``M = M0 + F_z M1``.
 
     Rolling resistance ``-c F_z omega_h/|omega_h|``, pivot ``-c F_z sgn(omega_z) e_z``, air
-    ``-c omega_h / cos(theta)`` (see :mod:`rollingdisk.ground`).  Scalars only."""
+    ``-c omega3 e_zeta / cos^3(theta)`` (see :mod:`rollingdisk.ground`).  Scalars only."""
     s = np.sin(theta)
     c = np.cos(theta)
     wx = w1
@@ -354,9 +354,9 @@ def _coulomb_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3):
     kr = 0.0
     if n > 0.0:
         kr = -c_roll / n
-    ka = -c_air / c
+    ka = -c_air * w3 / (c * c * c)  # air: -c omega3 zeta / cos^3(theta), zeta = (0, -s, c)
     M1z = -c_pivot * np.sign(wz)
-    return ka * wx, ka * wy, 0.0, kr * wx, kr * wy, M1z
+    return 0.0, -ka * s, ka * c, kr * wx, kr * wy, M1z
 
 
 def _coulomb_powers(c_roll, c_pivot, c_air, theta, w1, w2, w3, F_z):
@@ -367,7 +367,7 @@ def _coulomb_powers(c_roll, c_pivot, c_air, theta, w1, w2, w3, F_z):
     wy = w2 * c - w3 * s
     wz = w2 * s + w3 * c
     wh2 = wx * wx + wy * wy
-    return -c_roll * F_z * np.sqrt(wh2), -c_pivot * F_z * np.abs(wz), -c_air * wh2 / c
+    return -c_roll * F_z * np.sqrt(wh2), -c_pivot * F_z * np.abs(wz), -c_air * w3 * w3 / (c * c * c)
 
 
 def _rolling_solve(h, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z):

@@ -116,18 +116,20 @@ class PivotFriction:
 class AirDrag:
     """Viscous drag of the air film under the disk, after Moffatt's model of Euler's disk.
 
-    ``M_h = -c omega_h / cos(theta)``, ``M_z = 0`` (Cxyz), power
-    ``-c |omega_h|^2 / cos(theta) <= 0``.  Near the end of Euler's disk the tilt
-    ``alpha = pi/2 - |theta|`` is small, ``cos(theta) = sin(alpha) ~ alpha``, and the
-    horizontal angular velocity is ``|omega_h| ~ Omega alpha``, so the power is
-    ``-c Omega^2 alpha``: Moffatt's dissipation rate ``Phi = 2 pi mu a^3 Omega^2 alpha`` in
-    the viscous gap of thickness ``a alpha``.  Hence ``c = 2 pi mu_air a^3 / (m g a)
-    sqrt(g/a)`` in the library's units, with ``mu_air ~ 1.8e-5 Pa s``.  The moment is
-    independent of ``F_z``.
+    ``M = -c omega3 e_zeta / cos^3(theta)`` with ``e_zeta = (0, -sin theta, cos theta)`` (Cxyz)
+    the in-plane axis of C xi eta zeta that turns with the precession; power
+    ``-c omega3^2 / cos^3(theta) = -c Omega^2 / cos(theta) <= 0`` (``omega3 = Omega cos
+    theta``, eq. 3).  Near the end of Euler's disk the tilt ``alpha = pi/2 - |theta|`` is
+    small and ``cos(theta) = sin(alpha) ~ alpha``: the power is ``-c Omega^2 / alpha``,
+    Moffatt's dissipation ``Phi = 2 pi mu_air a^3 Omega^2 / alpha`` in the air gap of
+    thickness ``a alpha`` sheared at speed ``a Omega``.  Hence ``c = 2 pi mu_air a^(3/2) /
+    (m g^(1/2))`` in the library's units (``mu_air ~ 1.8e-5 Pa s``).  Independent of
+    ``F_z``.
 
     Source: H. K. Moffatt, "Euler's disk and its finite-time singularity", Nature 404
-    (2000) 833 (prediction ``alpha ~ (t0 - t)^(1/3)``, ``Omega ~ (t0 - t)^(-1/6)``);
-    the extension to any tilt by ``1/cos(theta)`` is this library's choice, see
+    (2000) 833 (with rolling, ``Omega^2 alpha ~ g/a`` and ``E ~ (3/2) m g a alpha``, it
+    predicts ``alpha ~ (t0 - t)^(1/3)``, ``Omega ~ (t0 - t)^(-1/6)``).  The form away from
+    small ``alpha`` (the ``omega3`` moment and ``1/cos^3``) is this library's choice, see
     ``docs/friction.md``.
     """
 
@@ -138,14 +140,14 @@ class AirDrag:
 
     def moment(self, theta, omega1, omega2, omega3, F_z=None):
         """``(M_x, M_y, M_z)`` in Cxyz, units of ``m g a``."""
-        wx, wy, wz = angular_velocity_xyz(theta, omega1, omega2, omega3)
-        k = -self.c / np.cos(theta)
-        return np.asarray(k * wx)[()], np.asarray(k * wy)[()], np.asarray(0.0 * k)[()]
+        c = np.cos(theta)
+        k = -self.c * omega3 / (c * c * c)
+        return np.asarray(0.0 * k)[()], np.asarray(-k * np.sin(theta))[()], np.asarray(k * c)[()]
 
     def power(self, theta, omega1, omega2, omega3, F_z=None):
-        """``omega . M = -c |omega_h|^2 / cos(theta) <= 0``."""
-        wx, wy, wz = angular_velocity_xyz(theta, omega1, omega2, omega3)
-        return -self.c * (wx * wx + wy * wy) / np.cos(theta)
+        """``omega . M = -c omega3^2 / cos^3(theta) <= 0``."""
+        c = np.cos(theta)
+        return -self.c * omega3 * omega3 / (c * c * c)
 
 
 def _model(name, cls, value):
