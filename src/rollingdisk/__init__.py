@@ -11,23 +11,27 @@ numba, lazily, when the integrator first runs); ``symbolic``, ``plotting``, ``fi
 """
 
 from . import (
+    _hybrid,
     _simulate,
     _stability,
     disk,
     equations,
     errors,
     events,
+    ground,
     measure,
     regions,
     steady,
     trajectory,
 )
+from ._hybrid import *  # noqa: F403
 from ._simulate import *  # noqa: F403
 from ._stability import *  # noqa: F403
 from .disk import *  # noqa: F403
 from .equations import *  # noqa: F403
 from .errors import *  # noqa: F403
 from .events import *  # noqa: F403
+from .ground import *  # noqa: F403
 from .measure import *  # noqa: F403
 from .regions import *  # noqa: F403
 from .steady import *  # noqa: F403
@@ -37,5 +41,5 @@ __version__ = "0.1.0"
 
 __all__ = [*errors.__all__, *disk.__all__, *equations.__all__, *steady.__all__,
            *_stability.__all__, *regions.__all__, *trajectory.__all__, *events.__all__,
-           *_simulate.__all__, *measure.__all__]
-del _simulate, _stability
+           *_simulate.__all__, *measure.__all__, *ground.__all__, *_hybrid.__all__]
+del _simulate, _stability, _hybrid

@@ -42,6 +42,7 @@ __all__ = [
     "Omega0_sq",
     "r_C_star",
     "se_circle_radius",
+    "mu_required_map",
 ]
 
 #: Tolerance on |y_P0| below which a tilt counts as the static-equilibrium (SE) tilt.
@@ -116,6 +117,17 @@ class SteadyMotion:
         return self.disk.h
 
     @property
+    def mu_required(self) -> float:
+        """Least static friction coefficient that keeps this motion rolling, ``|F_t| / F_z``.
+
+        With ``F_x = 0``, ``F_z = 1`` (eq. 19) and ``F_y = -r_C Omega0^2`` (eq. 27) it is
+        ``|r_C| Omega0^2``; 0 on straight lines, spins and smooth ground.  On Coulomb
+        ground with ``mu_s > mu_required`` the motion keeps rolling; below, it starts to
+        slide at once.
+        """
+        return abs(self.F_y) / 1.0  # |F_t| / F_z with F_x = 0, F_z = 1 (eq. 19)
+
+    @property
     def h_tilde(self) -> float:
         """``h~ = h sgn(theta0)`` (eq. 4)."""
         return h_tilde(self.h, self.theta0)
@@ -154,6 +166,7 @@ class SteadyMotion:
             if isinstance(v, float) and not math.isfinite(v):
                 v = None
             out[name] = v
+        out["mu_required"] = self.mu_required
         return out
 
 
@@ -448,3 +461,17 @@ def r_C_star(h, theta0):
         N, A, B = _rough_Omega0_sq_parts(h, ht, s, c, s / c)
         out = -A / B
     return np.where(_map_domain(h, theta0), out, np.nan)[()]
+
+
+def mu_required_map(h, theta0, r_C):
+    """``mu_required = |F_t|/F_z = |r_C| Omega0^2`` of the rough steady circles (eqs. 19, 27,
+    31): the least static friction coefficient that keeps each circle rolling.
+
+    Arrays in (broadcast), array out; NaN where no steady circle has this ``(theta0, r_C)``
+    (``Omega0^2 <= 0`` or undefined, see :func:`Omega0_sq`).  A circle survives on Coulomb
+    ground with static coefficient ``mu_s`` where ``mu_required_map(...) < mu_s``.
+    """
+    Om2 = np.asarray(Omega0_sq(h, theta0, r_C), dtype=float)
+    r = np.broadcast_to(np.asarray(r_C, dtype=float), Om2.shape)
+    with np.errstate(invalid="ignore"):
+        return np.where(Om2 > 0, np.abs(r) * Om2, np.nan)[()]

@@ -17,7 +17,26 @@ import numpy as np
 from .disk import Disk
 from .equations import contact_force, contact_point, energy, state_index
 
-__all__ = ["Trajectory"]
+__all__ = ["Trajectory", "Transition"]
+
+
+@dataclass(frozen=True)
+class Transition:
+    """A change of mode on Coulomb ground at time ``t``: ``from_mode -> to_mode``
+    (``"rolling"`` / ``"sliding"``)."""
+
+    t: float
+    from_mode: str
+    to_mode: str
+
+    def as_dict(self) -> dict:
+        """``{"t": t, "from": from_mode, "to": to_mode}``."""
+        return {"t": self.t, "from": self.from_mode, "to": self.to_mode}
+
+
+def _layout(ground) -> str:
+    """The state layout of ``ground``: Coulomb ground uses the smooth one."""
+    return ground if isinstance(ground, str) else "smooth"
 
 
 @dataclass(frozen=True, eq=False)
@@ -60,6 +79,16 @@ class Trajectory:
     sol : callable or None
         With ``simulate(..., dense_output=True)``: ``sol(t)``, the DOP853 interpolant of
         the whole run (as ``solve_ivp``'s ``sol``), for ``t`` within ``[t[0], t[-1]]``.
+    mode : ndarray of int8 or None
+        Coulomb ground only: the mode at each stored point, codes
+        :data:`rollingdisk.equations.MODE_NAMES` (0 rolling, 1 sliding); ``None`` for
+        single-mode runs (rough, smooth).
+    transitions : tuple of Transition
+        Coulomb ground only: the mode changes ``(t, from_mode, to_mode)``, in time order.
+    dissipated : dict or None
+        Coulomb ground only: energy dissipated so far by each term at each stored point,
+        ``{"slip", "rolling_resistance", "pivot", "air"}`` -> arrays (units ``m g a``);
+        ``E + sum(dissipated) = const`` (eq. 12).
     """
 
     disk: Disk
@@ -78,12 +107,19 @@ class Trajectory:
     t_events: tuple = field(default=())
     y_events: tuple = field(default=())
     sol: object = None
+    mode: np.ndarray | None = None
+    transitions: tuple = field(default=())
+    dissipated: dict | None = None
 
     def __post_init__(self):
         for name in ("t", "y"):
             a = np.array(getattr(self, name), dtype=float)
             a.setflags(write=False)
             object.__setattr__(self, name, a)
+        if self.mode is not None:
+            a = np.array(self.mode, dtype=np.int8)
+            a.setflags(write=False)
+            object.__setattr__(self, "mode", a)
 
     def __repr__(self) -> str:
         return (f"Trajectory(ground={self.ground!r}, h={self.disk.h:g}, t=[{self.t[0]:g}, "
@@ -98,7 +134,7 @@ class Trajectory:
 
     def component(self, name: str) -> np.ndarray:
         """The state component ``name`` (e.g. ``"theta"``) along the trajectory."""
-        return self.y[state_index(self.ground, name)]
+        return self.y[state_index(_layout(self.ground), name)]
 
     # state components, named as in the paper
     X_C = property(lambda self: self.component("X_C"), doc="X_C, centre C in OXYZ.")
@@ -122,11 +158,17 @@ class Trajectory:
 
     @cached_property
     def _P(self):
-        return contact_point(self.disk, self.ground, self.y)
+        return contact_point(self.disk, _layout(self.ground), self.y)
 
     @cached_property
     def _F(self):
-        return contact_force(self.disk, self.ground, self.y)
+        if isinstance(self.ground, str):
+            return contact_force(self.disk, self.ground, self.y)
+        from .equations import MODE_NAMES, coulomb_contact
+
+        rows = [coulomb_contact(self.disk, self.ground, MODE_NAMES[m], self.y[:, i])
+                for i, m in enumerate(self.mode)]
+        return tuple(np.array([r[k] for r in rows]) for k in ("F_x", "F_y", "F_z"))
 
     @property
     def X_P(self) -> np.ndarray:
@@ -156,7 +198,7 @@ class Trajectory:
     @cached_property
     def E(self) -> np.ndarray:
         """Total mechanical energy, units of m g a (eq. 13)."""
-        return np.asarray(energy(self.disk, self.ground, self.y))
+        return np.asarray(energy(self.disk, _layout(self.ground), self.y))
 
     def as_columns(self) -> dict[str, np.ndarray]:
         """Columns ``t, X_C, Y_C, psi, theta, phi, omega1, omega2, omega3, X_P, Y_P, F_x,
@@ -167,6 +209,8 @@ class Trajectory:
                 "omega2": self.omega2, "omega3": self.omega3, "X_P": self.X_P,
                 "Y_P": self.Y_P, "F_x": self.F_x, "F_y": self.F_y, "F_z": self.F_z,
                 "E": self.E}
-        if self.ground == "smooth":
+        if _layout(self.ground) == "smooth":
             cols.update(V_X=self.V_X, V_Y=self.V_Y)
+        if self.mode is not None:
+            cols["mode"] = self.mode
         return cols
