@@ -161,10 +161,13 @@ def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, ato
         ad = abs(d1)
         if ad > max_d:
             max_d = ad
+        sg = 1.0 if d1 >= 0.0 else -1.0
         if np.isnan(t_lo) and ad > grow_lo * a0:
-            t_lo = t + dt
+            lev = grow_lo * a0  # |d| <= lev at t (first step beyond): crossing in the step
+            t_lo = t + _hermite_root(dt, sg * d0 - lev, sg * y[1], ad - lev, sg * y_new[1])
         if np.isnan(t_hi) and ad > grow_hi * a0:
-            t_hi = t + dt
+            lev = grow_hi * a0
+            t_hi = t + _hermite_root(dt, sg * d0 - lev, sg * y[1], ad - lev, sg * y_new[1])
         E = _reduced_energy(rough, h, k1, k2, y_new)
         de = abs(E - E0) / max(abs(E0), 1e-300)
         if de > e_drift:

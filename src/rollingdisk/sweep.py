@@ -304,7 +304,7 @@ def _save(ds, out: Path) -> None:
             ds.to_netcdf(tmp)
     else:
         with atomic_dir(out) as tmp:
-            ds.to_zarr(tmp, mode="w")
+            ds.to_zarr(tmp, mode="w", consolidated=False)
 
 
 def _check_out(out) -> Path:
@@ -449,7 +449,7 @@ def open_sweep(path):
         raise ParameterError(f"path: no sweep at {str(path)!r}")
     if path.suffix == ".nc":
         return xr.load_dataset(path)
-    return xr.open_zarr(path).load()
+    return xr.open_zarr(path, consolidated=False).load()
 
 
 def basin_sweep(grid: SweepGrid, t_end: float, *, kick_max: float = 1.0, rounds: int = 10,
