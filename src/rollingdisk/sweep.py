@@ -300,7 +300,7 @@ def _save(ds, out: Path) -> None:
     from ._files import atomic_dir, atomic_file
 
     if out.suffix == ".nc":
-        with atomic_file(out) as tmp:
+        with atomic_file(out, mode=None) as tmp:
             ds.to_netcdf(tmp)
     else:
         with atomic_dir(out) as tmp:

@@ -1,0 +1,30 @@
+"""``rollingdisk sweep`` on the command line."""
+
+import json
+
+import pytest
+
+from rollingdisk.cli import main
+
+pytest.importorskip("xarray")
+
+
+def test_sweep_cli_json(tmp_path, capsys):
+    out = tmp_path / "s.zarr"
+    rc = main(["sweep", "--ground", "rough", "--theta0", "0.3:1.2:3", "--omega30=-5:5:3",
+               "--t-end", "30", "--kick", "1e-3", "--out", str(out), "--json"])
+    assert rc == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["n"] == 9 and rec["agreement"] == 1.0 and out.is_dir()
+
+
+@pytest.mark.parametrize("argv", [
+    ["--ground", "smooth", "--theta0", "0.5", "--rC", "1", "--t-end", "5"],
+    ["--ground", "rough", "--theta0", "0.5:1:x", "--omega30", "1", "--t-end", "5"],
+    ["--ground", "rough", "--theta0", "0.5", "--omega30", "1", "--t-end", "-5"],
+])
+def test_sweep_cli_bad_input(tmp_path, capsys, argv):
+    assert main(["sweep", *argv, "--out", str(tmp_path / "s.nc")]) == 2
+    err = capsys.readouterr().err
+    assert err.strip() and err.strip().count("\n") == 0
+    assert not (tmp_path / "s.nc").exists()
