@@ -28,3 +28,17 @@ def test_sweep_cli_bad_input(tmp_path, capsys, argv):
     err = capsys.readouterr().err
     assert err.strip() and err.strip().count("\n") == 0
     assert not (tmp_path / "s.nc").exists()
+
+
+def test_sweep_plots():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from rollingdisk.plotting import plot_basin_map, plot_nonlinear_map
+    from rollingdisk.sweep import SweepGrid, basin_sweep, run_sweep
+
+    g = SweepGrid("rough", h=0.17, theta0=[0.4, 0.8, 1.2], omega30=[-4.0, 1.0, 4.0])
+    out = plot_nonlinear_map(run_sweep(g, 10.0))
+    assert out["mesh"] is not None
+    out = plot_basin_map(basin_sweep(g, 10.0, kick_max=0.2, rounds=1))
+    assert out["colorbar"] is not None
