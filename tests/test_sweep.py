@@ -109,3 +109,15 @@ def test_bad_input():
         sweep.Perturbation(kick=0.0, tilt=0.0)
     with pytest.raises(ParameterError):
         sweep.run_sweep(_small(), 10.0, out="x.csv")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("ground", ["rough", "smooth"])
+def test_agreement_60x60(ground):
+    """Issue 12: >= 99.5 % agreement with the sign of varpi2 where |varpi2| > 0.05."""
+    g = sweep.SweepGrid(ground, h=0.17, theta0=np.linspace(-1.4, 1.4, 60),
+                        omega30=np.linspace(-6.0, 6.0, 60))
+    ds = sweep.run_sweep(g, 200.0, executor="threads")
+    m = np.abs(ds.varpi2.values) > 0.05
+    agree = np.mean(ds.stable_simulated.values[m] == ds.stable.values[m])
+    assert agree >= 0.995
