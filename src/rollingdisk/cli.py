@@ -683,6 +683,106 @@ def _run_atlas(args) -> int:
     return 0
 
 
+# ---------------------------------------------------------------------------- sweep
+def _sweep_range(text: str) -> list[float]:
+    """``A:B:N`` (N >= 1 points from A to B, angles may carry a deg suffix) or one value."""
+    import numpy as np
+
+    parts = str(text).split(":")
+    try:
+        if len(parts) == 1:
+            return [parse_angle(parts[0])]
+        if len(parts) == 3:
+            a, b, n = parse_angle(parts[0]), parse_angle(parts[1]), int(parts[2])
+            if n >= 1:
+                return [float(x) for x in np.linspace(a, b, n)]
+    except (argparse.ArgumentTypeError, ValueError):
+        pass
+    raise argparse.ArgumentTypeError(f"expected a value or A:B:N with N >= 1, got {text!r}")
+
+
+def _add_sweep(sub) -> None:
+    """``rollingdisk sweep``: perturbed steady circles over a grid (issue 12)."""
+    p = sub.add_parser(
+        "sweep", help="integrate perturbed steady circles over a parameter grid",
+        description="Integrate a perturbed steady circle from every point of a grid "
+        "theta0 x (omega30 | rC | Omega0) (x h) and store per-trajectory summaries next to "
+        "the closed-form varpi^2 (docs/sweeps.md). Ranges as A:B:N.")
+    p.add_argument("--ground", choices=("rough", "smooth"), required=True)
+    p.add_argument("--h", type=_sweep_range, default=[0.17], help="H or A:B:N")
+    p.add_argument("--theta0", type=_sweep_range, required=True, help="A:B:N (radians or deg)")
+    g = p.add_mutually_exclusive_group(required=True)
+    g.add_argument("--omega30", type=_sweep_range)
+    g.add_argument("--rC", type=_sweep_range)
+    g.add_argument("--Omega0", type=_sweep_range)
+    p.add_argument("--t-end", type=float, required=True, dest="t_end")
+    p.add_argument("--kick", type=float, default=None, help="kick in omega1 (default 1e-3)")
+    p.add_argument("--perturb", type=float, default=None, help="tilt added to theta0")
+    p.add_argument("--basin", action="store_true",
+                   help="largest bounded kick by bisection (--kick is the upper end)")
+    p.add_argument("--rounds", type=_positive_int, default=10, help="bisection rounds")
+    x = p.add_mutually_exclusive_group()
+    x.add_argument("--workers", type=_positive_int, default=None, help="local cores")
+    x.add_argument("--dask", default=None, metavar="ADDRESS|local")
+    p.add_argument("--chunk", type=_positive_int, default=2048)
+    p.add_argument("--out", required=True, help="FILE.zarr or FILE.nc")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(handler=_run_sweep)
+
+
+def _run_sweep(args) -> int:
+    import json
+    import time
+
+    import numpy as np
+
+    from .sweep import Perturbation, SweepGrid, basin_sweep, run_sweep
+
+    second = {k: getattr(args, k) for k in ("omega30", "Omega0")}
+    second["r_C"] = args.rC
+    grid = SweepGrid(args.ground, h=args.h, theta0=args.theta0, **second)
+    start = time.perf_counter()
+    last = [0.0]
+
+    def bar(done, total, rate, eta):
+        now = time.perf_counter()
+        if now - last[0] < 0.5 and done < total:
+            return
+        last[0] = now
+        print(f"\rsweep: {done}/{total} ({rate:.0f}/s, ETA {eta:.0f} s)   ", end="",
+              file=sys.stderr, flush=True)
+
+    executor = "dask" if args.dask else ("threads" if args.workers != 1 else "serial")
+    if args.basin:
+        if args.perturb is not None:
+            raise CLIError("rollingdisk sweep: error: --basin bisects the kick; drop --perturb")
+        ds = basin_sweep(grid, args.t_end, kick_max=args.kick or 1.0, rounds=args.rounds,
+                         out=args.out, executor="serial" if executor == "serial" else
+                         "threads", workers=args.workers, chunk=args.chunk)
+        n = int(ds.kick_basin.size) * (args.rounds + 1)
+    else:
+        kick = args.kick if args.kick is not None else (0.0 if args.perturb else 1e-3)
+        pert = Perturbation(kick=kick, tilt=args.perturb or 0.0)
+        ds = run_sweep(grid, args.t_end, perturbation=pert, out=args.out, executor=executor,
+                       workers=args.workers,
+                       dask_address=None if args.dask in (None, "local") else args.dask,
+                       chunk=args.chunk, progress=bar)
+        n = int(ds.varpi2.size)
+        print("", file=sys.stderr)
+    wall = time.perf_counter() - start
+    m = np.abs(ds.varpi2.values) > 0.05
+    agree = (float(np.mean(ds.stable_simulated.values[m] == ds.stable.values[m]))
+             if not args.basin and m.any() else None)
+    rec = {"n": n, "wall_time_s": wall, "trajectories_per_s": n / wall if wall > 0 else None,
+           "agreement": agree, "out": args.out}
+    if args.json:
+        print(json.dumps(rec, allow_nan=False))
+    else:
+        print(f"{n} trajectories in {wall:.1f} s ({rec['trajectories_per_s']:.0f}/s); "
+              f"agreement {agree}; {args.out}")
+    return 0
+
+
 # ---------------------------------------------------------------------------- main
 def build_parser() -> argparse.ArgumentParser:
     """The parser of the ``rollingdisk`` command line (one subparser per subcommand).
@@ -693,7 +793,8 @@ def build_parser() -> argparse.ArgumentParser:
     """
     parser = _Parser(prog="rollingdisk", description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
-    for add in (_add_derive, _add_steady, _add_thresholds, _add_simulate, _add_figures):
+    for add in (_add_derive, _add_steady, _add_thresholds, _add_simulate, _add_figures,
+                _add_sweep):
         add(sub)
     return parser
 

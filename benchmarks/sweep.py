@@ -1,0 +1,140 @@
+"""Sweep throughput (issue 12): trajectories per second per core, in one run.
+
+Job: perturbed steady circles on rough ground, h = 0.17, theta0 in [0.3, 1.2], omega30 in
+[2, 6] (stable and unstable), kick 1e-3 in omega1, T = 100, rtol = atol = 1e-9.
+
+Prints: the sweep on one thread; a baseline loop over scipy.integrate.solve_ivp (DOP853,
+same tolerances) on the numpy right-hand side rollingdisk.equations_of_motion; the
+multi-core speed-up; Dask (LocalCluster, one single-threaded worker process per core)
+against the plain multi-core run; heyoka's batch (SIMD) mode on the same job where heyoka is
+installed.  Timings on a shared machine are noisy: run it alone for figures to quote.
+
+Run: PYTHONPATH=src python benchmarks/sweep.py [N]
+"""
+
+import math
+import os
+import sys
+import time
+
+import numpy as np
+
+import rollingdisk as rd
+from rollingdisk.sweep import Perturbation, SweepGrid, run_sweep
+
+H, T, TOL, KICK = 0.17, 100.0, 1e-9, 1e-3
+
+
+def grid(n):
+    m = max(2, int(math.sqrt(n)))
+    return SweepGrid("rough", h=H, theta0=np.linspace(0.3, 1.2, m),
+                     omega30=np.linspace(2.0, 6.0, m))
+
+
+def timed(f):
+    t = time.perf_counter()
+    r = f()
+    return r, time.perf_counter() - t
+
+
+def scipy_baseline(g, k):
+    from scipy.integrate import solve_ivp
+
+    disk = rd.Disk(H)
+    f = rd.equations_of_motion(disk, "rough")
+    pts = [(th, w) for th in g.theta0 for w in g.omega30][:k]
+    t = time.perf_counter()
+    for th, w in pts:
+        m = rd.steady_motion(disk, "rough", th, Omega0=w / math.cos(th))
+        y0 = m.initial_state()
+        y0[5] = KICK  # omega1
+        solve_ivp(f, (0, T), y0, method="DOP853", rtol=TOL, atol=TOL)
+    return len(pts) / (time.perf_counter() - t)
+
+
+def heyoka_batch(g, k):
+    """heyoka's Taylor integrator in batch (SIMD) mode on the same reduced system: eq. (38)
+    from the library's own kernel, its code re-bound to heyoka's sin/cos (theta > 0 here,
+    so sign(theta) = 1)."""
+    try:
+        import heyoka as hy
+    except ImportError:
+        return None, "not installed"
+    import types
+
+    from rollingdisk import equations as eq
+
+    class _np:
+        sin = staticmethod(hy.sin)
+        cos = staticmethod(hy.cos)
+
+        @staticmethod
+        def sign(x):
+            return 1.0
+
+    ns = dict(eq.__dict__, np=_np)
+    for name in ("_geometry", "_rough_omega_dot"):
+        f = eq.__dict__[name]
+        ns[name] = types.FunctionType(f.__code__, ns, name)
+    th, w1, w2, w3 = hy.make_vars("th", "w1", "w2", "w3")
+    d1, d2, d3 = ns["_rough_omega_dot"](H, th, w1, w2, w3)
+    sys_ = [(th, w1), (w1, d1), (w2, d2), (w3, d3)]
+    B = hy.recommended_simd_size()
+    disk = rd.Disk(H)
+    pts = [(th_, w) for th_ in g.theta0 for w in g.omega30][:k]
+    states = []
+    for th_, w in pts:
+        m = rd.steady_motion(disk, "rough", th_, Omega0=w / math.cos(th_))
+        states.append((th_, KICK, m.omega20, m.omega30))
+    states = np.array(states)
+    nb = len(states) // B
+    ta = hy.taylor_adaptive_batch(sys_, np.ascontiguousarray(states[:B].T), tol=TOL)
+    t = time.perf_counter()
+    for i in range(nb):
+        ta.set_time(0.0)
+        ta.state[:] = states[i * B:(i + 1) * B].T
+        ta.propagate_until(T)
+    dt = time.perf_counter() - t
+    return nb * B / dt, f"{nb * B / dt:.0f} traj/s/core (heyoka {hy.__version__}, SIMD width {B})"
+
+
+def main():
+    n = int(sys.argv[1]) if len(sys.argv) > 1 else 4096
+    g = grid(n)
+    pert = Perturbation(kick=KICK)
+    ncores = os.cpu_count() or 1
+    run_sweep(grid(16), 1.0, perturbation=pert)  # compile
+    kw = dict(perturbation=pert, rtol=TOL, atol=TOL, chunk=1024)
+    ds1, t1 = timed(lambda: run_sweep(g, T, executor="serial", **kw))
+    n = ds1.varpi2.size
+    r1 = n / t1
+    dsm, tm = timed(lambda: run_sweep(g, T, executor="threads", workers=ncores, **kw))
+    rm = n / tm
+    print(f"trajectories: {n}, T = {T}, rtol = atol = {TOL}, cores: {ncores}")
+    print(f"sweep, 1 thread:          {r1:9.0f} traj/s/core")
+    rs = scipy_baseline(g, 40)
+    print(f"scipy solve_ivp baseline: {rs:9.1f} traj/s/core  (sweep is {r1 / rs:.0f}x)")
+    print(f"sweep, {ncores} threads:         {rm:9.0f} traj/s  speed-up {rm / r1:.2f}x"
+          f" (identical: {all((ds1[k].values.tobytes() == dsm[k].values.tobytes()) for k in ds1)})")
+    try:
+        from dask.distributed import Client, LocalCluster
+
+        with LocalCluster(n_workers=ncores, threads_per_worker=1, dashboard_address=None) as c:
+            with Client(c) as cl:
+                cl.run(lambda: __import__("rollingdisk._sweep_core"))
+                addr = c.scheduler_address
+                run_sweep(grid(16), 1.0, executor="dask", dask_address=addr, **kw)
+                dsd, td = timed(lambda: run_sweep(g, T, executor="dask", dask_address=addr,
+                                                  **kw))
+        rd_ = n / td
+        same = all(ds1[k].values.tobytes() == dsd[k].values.tobytes() for k in ds1)
+        print(f"dask, {ncores} workers:          {rd_:9.0f} traj/s  efficiency vs threads "
+              f"{rd_ / rm:.0%} (identical: {same})")
+    except ImportError:
+        print("dask: not installed")
+    r, note = heyoka_batch(g, n)
+    print(f"heyoka batch mode: {note}" + ("" if r is None else f"  (sweep/heyoka {r1 / r:.2f})"))
+
+
+if __name__ == "__main__":
+    main()

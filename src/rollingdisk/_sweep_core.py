@@ -1,0 +1,216 @@
+"""Compiled batch integrator for :mod:`rollingdisk.sweep` (numba; imported lazily).
+
+Integrates many trajectories of the reduced system ``x = (theta, omega1, omega2, omega3)``
+(eq. 2 with eq. 38 on rough / eq. 49 on smooth ground) in one call, a ``numba.prange`` loop
+over trajectories, with the DOP853 building blocks of :mod:`rollingdisk._numba_core`
+(``_step``, ``_error_norm``, ``initial_step``, ``_guards``; same step-size control as
+scipy's DOP853).  No step is stored: each trajectory keeps running summaries only.
+
+Each trajectory's computation depends on its own inputs alone (no reduction across
+trajectories, no thread-dependent state), so the results are bitwise the same whichever
+thread, chunk or process computes it.
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+
+from ._numba_core import (
+    _ERR_EXP,
+    _MAX_FACTOR,
+    _MIN_FACTOR,
+    _NSX,
+    _SAFETY,
+    _error_norm,
+    _geometry,
+    _guards,
+    _rhs,
+    _step,
+    initial_step,
+)
+
+# status codes (as in rollingdisk._numba_core)
+COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED = 1, 2, 3, 4, 5
+STATUS_NAMES = {1: "completed", 2: "lift-off", 3: "edge-contact", 4: "fell-flat",
+                5: "failed"}
+
+# summary columns returned by run_batch (float64 array of shape (n, NCOL))
+COLUMNS = ("status", "t_end", "max_dtheta", "n_crossings", "period", "t_grow_lo",
+           "t_grow_hi", "energy_drift", "n_steps")
+NCOL = len(COLUMNS)
+
+
+@numba.njit(cache=True)
+def _reduced_energy(rough, h, k1, k2, y):
+    """E of the reduced state (eqs. 13, 37, 7); on smooth ground the part of E that does not
+    contain the constant V_X, V_Y (conserved by itself)."""
+    theta, w1, w2, w3 = y[0], y[1], y[2], y[3]
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    v_Cz = -w1 * y_P  # eq. (7)
+    if rough:
+        v_Cx = w2 - ht * w3  # eq. (37)
+        v_Cy = w1 * z_P
+        kin = 0.5 * (v_Cx * v_Cx + v_Cy * v_Cy + v_Cz * v_Cz)
+    else:
+        kin = 0.5 * v_Cz * v_Cz
+    return kin + 0.5 * k1 * (w1 * w1 + w3 * w3) + 0.5 * k2 * w2 * w2 - z_P
+
+
+@numba.njit(cache=True)
+def _hermite_root(dt, d0, v0, d1, v1):
+    """Root in [0, dt] of the cubic Hermite interpolant of d with d(0) = d0 < 0 <= d(dt) = d1
+    and slopes v0, v1 (bisection on the bracket then Newton polish)."""
+    a, b = 0.0, 1.0
+    for _ in range(60):
+        m = 0.5 * (a + b)
+        s = m
+        h00 = (1 + 2 * s) * (1 - s) ** 2
+        h10 = s * (1 - s) ** 2
+        h01 = s * s * (3 - 2 * s)
+        h11 = s * s * (s - 1)
+        val = h00 * d0 + h10 * dt * v0 + h01 * d1 + h11 * dt * v1
+        if val < 0.0:
+            a = m
+        else:
+            b = m
+        if b - a < 1e-14:
+            break
+    return 0.5 * (a + b) * dt
+
+
+@numba.njit(cache=True)
+def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
+         max_steps, out):
+    n = 4
+    K = np.empty((_NSX, n))
+    ytmp = np.empty(n)
+    y = x0.copy()
+    f = np.empty(n)
+    y_new = np.empty(n)
+    f_new = np.empty(n)
+    g = np.empty(3)
+    E0 = _reduced_energy(rough, h, k1, k2, y)
+    t = 0.0
+    max_d = abs(y[0] - theta_ref)
+    t_lo = np.nan
+    t_hi = np.nan
+    # least squares of crossing times t_k against k
+    nc = 0
+    sk = 0.0
+    st = 0.0
+    skk = 0.0
+    skt = 0.0
+    e_drift = 0.0
+    status = 0
+    n_steps = 0
+    _guards(rough, h, y, g)
+    sign1 = 1.0 if g[1] > 0.0 else -1.0
+    if g[0] <= 0.0:
+        status = LIFT_OFF
+    elif g[2] <= 0.0:
+        status = FELL_FLAT
+    _rhs(rough, h, y, f)
+    h_abs = initial_step(rough, h, 0.0, y, f, t_end, np.inf, rtol, atol)
+    while status == 0:
+        if t >= t_end:
+            status = COMPLETED
+            break
+        if n_steps >= max_steps:
+            status = FAILED
+            break
+        min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
+        if h_abs < min_step:
+            h_abs = min_step
+        accepted = False
+        rejected = False
+        while not accepted:
+            if h_abs < min_step:
+                break
+            dt = h_abs
+            if t + dt > t_end:
+                dt = t_end - t
+            _step(rough, h, t, y, f, dt, K, ytmp, y_new, f_new)
+            err = _error_norm(y, y_new, K, dt, rtol, atol)
+            if err < 1.0:
+                if err == 0.0:
+                    factor = _MAX_FACTOR
+                else:
+                    factor = min(_MAX_FACTOR, _SAFETY * err ** _ERR_EXP)
+                if rejected:
+                    factor = min(1.0, factor)
+                h_abs = dt * factor
+                accepted = True
+            else:
+                h_abs = dt * max(_MIN_FACTOR, _SAFETY * err ** _ERR_EXP)
+                rejected = True
+        if not accepted:
+            status = FAILED
+            break
+        n_steps += 1
+        # summaries on the accepted step (t, y) -> (t + dt, y_new)
+        d0 = y[0] - theta_ref
+        d1 = y_new[0] - theta_ref
+        if d0 < 0.0 <= d1:
+            tc = t + _hermite_root(dt, d0, y[1], d1, y_new[1])
+            sk += nc
+            st += tc
+            skk += nc * nc
+            skt += nc * tc
+            nc += 1
+        ad = abs(d1)
+        if ad > max_d:
+            max_d = ad
+        sg = 1.0 if d1 >= 0.0 else -1.0
+        if np.isnan(t_lo) and ad > grow_lo * a0:
+            lev = grow_lo * a0  # |d| <= lev at t (first step beyond): crossing in the step
+            t_lo = t + _hermite_root(dt, sg * d0 - lev, sg * y[1], ad - lev, sg * y_new[1])
+        if np.isnan(t_hi) and ad > grow_hi * a0:
+            lev = grow_hi * a0
+            t_hi = t + _hermite_root(dt, sg * d0 - lev, sg * y[1], ad - lev, sg * y_new[1])
+        E = _reduced_energy(rough, h, k1, k2, y_new)
+        de = abs(E - E0) / max(abs(E0), 1e-300)
+        if de > e_drift:
+            e_drift = de
+        t = t + dt
+        for i in range(n):
+            y[i] = y_new[i]
+            f[i] = f_new[i]
+        _guards(rough, h, y, g)
+        if g[0] <= 0.0:
+            status = LIFT_OFF
+        elif (g[1] > 0.0) != (sign1 > 0.0) or g[1] == 0.0:
+            if h > 0.0:
+                status = EDGE_CONTACT
+        elif g[2] <= 0.0:
+            status = FELL_FLAT
+    period = np.nan
+    if nc >= 2:
+        den = nc * skk - sk * sk
+        period = (nc * skt - sk * st) / den
+    out[0] = status
+    out[1] = t
+    out[2] = max_d
+    out[3] = nc
+    out[4] = period
+    out[5] = t_lo
+    out[6] = t_hi
+    out[7] = e_drift
+    out[8] = n_steps
+
+
+@numba.njit(parallel=True, cache=True)
+def run_batch(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
+              max_steps):
+    """Integrate every row of ``x0`` (shape (n, 4)) to ``t_end``; summaries (n, NCOL).
+
+    ``h, k1, k2, theta_ref, a0`` are arrays of length n (per-trajectory disk, reference
+    tilt and initial amplitude).  Guards end a trajectory at the end of the step on which
+    they fire (not located: the sweep only needs which one fired and about when).
+    """
+    n = x0.shape[0]
+    out = np.empty((n, NCOL))
+    for i in numba.prange(n):
+        _one(rough, h[i], k1[i], k2[i], x0[i], theta_ref[i], a0[i], grow_lo, grow_hi, t_end,
+             rtol, atol, max_steps, out[i])
+    return out

@@ -1,0 +1,538 @@
+"""Parameter sweeps: many perturbed steady motions, integrated in batches (issue 12).
+
+A sweep integrates the reduced system ``(theta, omega1, omega2, omega3)`` (eq. 2 with
+eq. 38 on rough / eq. 49 on smooth ground) from a perturbed steady circle at every point of
+a grid and keeps a few summaries per trajectory (no per-step storage), next to the
+closed-form ``varpi^2`` (eq. 45 corrected / 55) and its sign.
+
+Rules (stated once, used everywhere):
+
+* Perturbation: ``theta(0) = theta0 + tilt``, ``omega1(0) = kick``; omega2, omega3 keep
+  their steady values.  The *initial amplitude* is ``a0 = |tilt| + |kick|`` (kick in
+  rad per unit time sqrt(a/g); for a linear oscillation of frequency varpi the amplitude is
+  ``sqrt(tilt^2 + kick^2/varpi^2)``, at most ``a0 * max(1, 1/varpi)``).
+* ``stable_simulated``: the run completed (no guard fired: lift-off F_z <= 0 eq. 11, edge
+  contact theta crossing 0, falling flat |theta| >= pi/2) and
+  ``max|theta - theta0| <= BOUND_FACTOR * a0`` with ``BOUND_FACTOR = 20``.
+* ``frequency``: ``2 pi / period``, the period being the least-squares slope of the times
+  of the upward crossings of ``theta - theta0`` (located by cubic Hermite interpolation
+  with omega1 as derivative) against their index; NaN with fewer than 2 crossings.
+* ``growth_rate``: ``ln(GROW_HI / GROW_LO) / (t_hi - t_lo)`` with ``t_lo`` (``t_hi``) the
+  end of the first step on which ``|theta - theta0|`` exceeds ``GROW_LO * a0``
+  (``GROW_HI * a0``), ``GROW_LO = 2``, ``GROW_HI = 10``: the log-slope of the envelope in
+  the linear window; NaN when the departure never reaches ``GROW_HI * a0``.
+* ``energy_drift``: ``max_t |E(t) - E(0)| / |E(0)|`` over accepted steps, E of the reduced
+  state (eq. 13 with eqs. 37 and 7 on rough ground; on smooth ground the part without the
+  constant horizontal velocity of C).
+
+The results are the same bit for bit whichever executor computes them (each trajectory's
+computation depends on its own inputs only).  Results are stored chunk by chunk in
+``OUT.partial/`` and the final Zarr store (or NetCDF file) appears under its name only once
+complete; a run interrupted for any reason resumes from the finished chunks.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import shutil
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .disk import Disk, check_ground, check_h, check_real
+from .errors import ParameterError
+
+__all__ = ["SweepGrid", "Perturbation", "run_sweep", "basin_sweep", "open_sweep",
+           "BOUND_FACTOR", "GROW_LO", "GROW_HI"]
+
+BOUND_FACTOR = 20.0
+GROW_LO = 2.0
+GROW_HI = 10.0
+_SECOND = ("omega30", "r_C", "Omega0")
+
+
+@dataclass(frozen=True)
+class Perturbation:
+    """Perturbation of the steady state: ``tilt`` added to theta, ``kick`` set as omega1.
+
+    Either may be a sequence (the ``amplitude`` axis of the sweep); a scalar is repeated.
+    """
+
+    kick: tuple = (1e-3,)
+    tilt: tuple = (0.0,)
+
+    def __post_init__(self):
+        k = np.atleast_1d(np.asarray(self.kick, dtype=float))
+        e = np.atleast_1d(np.asarray(self.tilt, dtype=float))
+        if k.ndim != 1 or e.ndim != 1:
+            raise ParameterError("kick and tilt must be scalars or 1-d sequences")
+        n = max(k.size, e.size)
+        if k.size not in (1, n) or e.size not in (1, n):
+            raise ParameterError(f"kick ({k.size}) and tilt ({e.size}) must have equal lengths"
+                                 " or length 1")
+        k = np.broadcast_to(k, (n,))
+        e = np.broadcast_to(e, (n,))
+        for name, v in (("kick", k), ("tilt", e)):
+            if not np.all(np.isfinite(v)):
+                raise ParameterError(f"{name} must be finite")
+        if np.any(np.abs(k) + np.abs(e) == 0):
+            raise ParameterError("each amplitude needs kick != 0 or tilt != 0")
+        object.__setattr__(self, "kick", tuple(float(x) for x in k))
+        object.__setattr__(self, "tilt", tuple(float(x) for x in e))
+
+
+@dataclass(frozen=True)
+class SweepGrid:
+    """A grid of steady circles: ``h x theta0 x (omega30 | r_C | Omega0)`` on one ground.
+
+    Give exactly one of ``omega30``, ``r_C`` (rough ground: Omega0^2 from eq. 31, NaN where
+    no steady motion has that radius) and ``Omega0``.  Alternatively give ``states``, a list
+    of arbitrary reduced initial states ``(theta, omega1, omega2, omega3)`` (then theta0 of
+    each is its own theta and no perturbation is added).
+    """
+
+    ground: str
+    h: tuple = (0.17,)
+    theta0: tuple = ()
+    omega30: tuple | None = None
+    r_C: tuple | None = None
+    Omega0: tuple | None = None
+    states: tuple | None = None
+
+    def __post_init__(self):
+        check_ground(self.ground)
+        hs = tuple(check_h(x) for x in np.atleast_1d(np.asarray(self.h, dtype=float)))
+        object.__setattr__(self, "h", hs)
+        if self.states is not None:
+            s = np.asarray(self.states, dtype=float)
+            if s.ndim != 2 or s.shape[1] != 4 or not np.all(np.isfinite(s)):
+                raise ParameterError("states must be a list of finite (theta, omega1, omega2,"
+                                     " omega3)")
+            if len(hs) != 1:
+                raise ParameterError("states need a single h")
+            object.__setattr__(self, "states", tuple(map(tuple, s.tolist())))
+            return
+        given = [k for k in _SECOND if getattr(self, k) is not None]
+        if len(given) != 1:
+            raise ParameterError(f"give exactly one of {_SECOND}, got {given}")
+        if given[0] == "r_C" and self.ground != "rough":
+            raise ParameterError("r_C determines Omega0 on rough ground only (eq. 31)")
+        th = tuple(check_real("theta0", x, low=-math.pi / 2, high=math.pi / 2, low_open=True,
+                              high_open=True) for x in np.atleast_1d(self.theta0))
+        if not th:
+            raise ParameterError("theta0 must not be empty")
+        object.__setattr__(self, "theta0", th)
+        v = tuple(check_real(given[0], x) for x in np.atleast_1d(getattr(self, given[0])))
+        if not v:
+            raise ParameterError(f"{given[0]} must not be empty")
+        object.__setattr__(self, given[0], v)
+
+    @property
+    def second(self) -> str:
+        return next(k for k in _SECOND if getattr(self, k) is not None)
+
+    @property
+    def shape(self) -> tuple:
+        if self.states is not None:
+            return (len(self.states),)
+        return (len(self.h), len(self.theta0), len(getattr(self, self.second)))
+
+
+@dataclass(frozen=True)
+class _Spec:
+    grid: SweepGrid
+    perturbation: Perturbation
+    t_end: float
+    rtol: float
+    atol: float
+    max_steps: int
+    chunk: int
+    n: int = field(default=0)
+
+    def to_json(self) -> str:
+        return json.dumps(asdict(self), sort_keys=True, allow_nan=False)
+
+
+def _setup(spec: _Spec, i0: int, i1: int):
+    """Initial states and closed-form columns of the flat points i0 ... i1 - 1."""
+    from . import _stability, steady
+
+    g = spec.grid
+    p = spec.perturbation
+    na = len(p.kick)
+    idx = np.arange(i0, i1)
+    a_i = idx % na
+    q = idx // na
+    n = i1 - i0
+    x0 = np.full((n, 4), np.nan)
+    h = np.empty(n)
+    theta_ref = np.empty(n)
+    varpi2 = np.full(n, np.nan)
+    stable = np.full(n, -1, dtype=np.int8)
+    kick = np.asarray(p.kick)[a_i]
+    tilt = np.asarray(p.tilt)[a_i]
+    if g.states is not None:
+        s = np.asarray(g.states)[q]
+        h[:] = g.h[0]
+        x0[:] = s
+        theta_ref[:] = s[:, 0]
+        kick = np.zeros(n)
+        tilt = np.zeros(n)
+        return x0, h, theta_ref, varpi2, stable, np.full(n, np.nan)
+    sh = g.shape
+    ih, it, iv = np.unravel_index(q, sh)
+    second = g.second
+    vals = np.asarray(getattr(g, second))
+    for j in range(n):
+        hh = g.h[ih[j]]
+        th = g.theta0[it[j]]
+        v = vals[iv[j]]
+        h[j] = hh
+        theta_ref[j] = th
+        disk = Disk(hh)
+        try:
+            if second == "omega30":
+                if v == 0:
+                    continue
+                m = steady.steady_motion(disk, g.ground, th, Omega0=v / math.cos(th))
+            elif second == "Omega0":
+                if v == 0:
+                    continue
+                m = steady.steady_motion(disk, g.ground, th, Omega0=v)
+            else:
+                m = steady.steady_motion(disk, g.ground, th, r_C=v)
+        except ValueError:  # NoSteadyMotion or no motion with these parameters
+            continue
+        x0[j] = (th + tilt[j], kick[j], m.omega20, m.omega30)
+        w = _stability.stability(m).varpi2
+        varpi2[j] = w
+        stable[j] = 1 if w > 0 else 0
+    a0 = np.abs(kick) + np.abs(tilt)
+    return x0, h, theta_ref, varpi2, stable, a0
+
+
+def _compute_chunk(spec: _Spec, k: int, n_threads: int | None = None) -> dict:
+    """Summaries of chunk k (a dict of 1-d arrays); deterministic."""
+    import numba
+
+    from . import _sweep_core as core
+
+    if n_threads is not None:
+        numba.set_num_threads(max(1, min(n_threads, numba.config.NUMBA_NUM_THREADS)))
+    i0 = k * spec.chunk
+    i1 = min(spec.n, i0 + spec.chunk)
+    x0, h, theta_ref, varpi2, stable, a0 = _setup(spec, i0, i1)
+    ok = np.all(np.isfinite(x0), axis=1)
+    out = np.full((i1 - i0, core.NCOL), np.nan)
+    if ok.any():
+        k1 = 0.25 + h[ok] ** 2 / 3.0  # eq. (10), as Disk.k1_sq
+        k2 = np.full(k1.shape, 0.5)
+        a0o = np.where(np.isfinite(a0[ok]), a0[ok], 1.0)
+        out[ok] = core.run_batch(spec.grid.ground == "rough", h[ok], k1, k2,
+                                 np.ascontiguousarray(x0[ok]), theta_ref[ok], a0o, GROW_LO,
+                                 GROW_HI, spec.t_end, spec.rtol, spec.atol, spec.max_steps)
+    cols = dict(zip(core.COLUMNS, out.T))
+    status = np.where(ok, cols["status"], 0).astype(np.int8)
+    period = cols["period"]
+    with np.errstate(all="ignore"):
+        freq = 2 * np.pi / period
+        growth = math.log(GROW_HI / GROW_LO) / (cols["t_grow_hi"] - cols["t_grow_lo"])
+        bounded = (status == core.COMPLETED) & (cols["max_dtheta"] <= BOUND_FACTOR * a0)
+    stable_sim = np.where(ok, bounded.astype(np.int8), -1).astype(np.int8)
+    return {"varpi2": varpi2, "stable": stable, "status": status, "t_end": cols["t_end"],
+            "max_dtheta": cols["max_dtheta"], "frequency": freq, "growth_rate": growth,
+            "energy_drift": cols["energy_drift"], "n_crossings": cols["n_crossings"],
+            "n_steps": cols["n_steps"], "stable_simulated": stable_sim, "amplitude0": a0}
+
+
+def _write_chunk(folder: Path, k: int, res: dict) -> None:
+    tmp = folder / f".chunk_{k:06d}.npz.tmp"
+    with open(tmp, "wb") as fh:
+        np.savez(fh, **res)
+    os.replace(tmp, folder / f"chunk_{k:06d}.npz")  # the chunk's completion record
+
+
+def _done_chunks(folder: Path) -> set:
+    return {int(p.name[6:12]) for p in folder.glob("chunk_*.npz")}
+
+
+def _dataset(spec: _Spec, cols: dict, executor: str):
+    import xarray as xr
+
+    from . import __version__
+    from ._sweep_core import STATUS_NAMES
+
+    g = spec.grid
+    p = spec.perturbation
+    na = len(p.kick)
+    if g.states is not None:
+        dims = ("point", "amplitude")
+        shape = (len(g.states), na)
+        coords = {"theta_init": ("point", [s[0] for s in g.states])}
+    else:
+        dims = ("h", "theta0", g.second, "amplitude")
+        shape = (*g.shape, na)
+        coords = {"h": list(g.h), "theta0": list(g.theta0),
+                  g.second: list(getattr(g, g.second))}
+    coords["kick"] = ("amplitude", list(p.kick))
+    coords["tilt"] = ("amplitude", list(p.tilt))
+    data = {k: (dims, np.asarray(v).reshape(shape)) for k, v in cols.items()}
+    ds = xr.Dataset(data, coords=coords)
+    ds.attrs.update({
+        "ground": g.ground, "h": json.dumps(list(g.h)), "rtol": spec.rtol, "atol": spec.atol,
+        "t_end_requested": spec.t_end, "max_steps": spec.max_steps,
+        "rollingdisk_version": __version__, "executor": executor, "spec": spec.to_json(),
+        "perturbation": json.dumps(asdict(p)),
+        "status_codes": json.dumps({str(k): v for k, v in STATUS_NAMES.items()}
+                                   | {"0": "no steady motion"}),
+        "rules": (f"stable_simulated: completed and max_dtheta <= {BOUND_FACTOR} * "
+                  f"(|tilt| + |kick|); growth_rate: ln({GROW_HI}/{GROW_LO})/(t_hi - t_lo); "
+                  "frequency: 2 pi / least-squares period of upward crossings; -1 = none"),
+    })
+    return ds
+
+
+def _save(ds, out: Path) -> None:
+    from ._files import atomic_dir, atomic_file
+
+    if out.suffix == ".nc":
+        with atomic_file(out, mode=None) as tmp:
+            ds.to_netcdf(tmp)
+    else:
+        with atomic_dir(out) as tmp:
+            ds.to_zarr(tmp, mode="w", consolidated=False)
+
+
+def _check_out(out) -> Path:
+    out = Path(os.fspath(out))
+    if out.suffix not in (".zarr", ".nc"):
+        raise ParameterError(f"out must end in .zarr or .nc, got {str(out)!r}")
+    if not out.parent.is_dir():
+        raise ParameterError(f"out: folder {str(out.parent)!r} does not exist")
+    return out
+
+
+def run_sweep(grid: SweepGrid, t_end: float, *, perturbation: Perturbation | None = None,
+              out=None, executor: str = "serial", workers: int | None = None,
+              dask_address: str | None = None, chunk: int = 2048, rtol: float = 1e-9,
+              atol: float = 1e-9, max_steps: int = 1_000_000, progress=None):
+    """Integrate a perturbed steady motion from every grid point; an ``xarray.Dataset``.
+
+    Parameters
+    ----------
+    grid : SweepGrid
+    t_end : float
+        Duration of each run (units sqrt(a/g)).
+    perturbation : Perturbation, optional
+        Default: kick 1e-3 in omega1.
+    out : path, optional
+        ``*.zarr`` or ``*.nc``.  Finished chunks are kept in ``out + ".partial"``; the store
+        appears only once complete.  A rerun with the same arguments resumes.
+    executor : {"serial", "threads", "dask"}
+        ``serial``: one thread; ``threads``: numba threads over ``workers`` (default all)
+        cores; ``dask``: ``dask.distributed`` tasks of ``chunk`` trajectories on a
+        LocalCluster with ``workers`` processes, or on the scheduler ``dask_address``.
+    progress : callable, optional
+        ``progress(done, total, rate, eta)`` after each chunk (trajectories, per second,
+        seconds).  An exception it raises interrupts the sweep (finished chunks are kept).
+
+    Returns
+    -------
+    xarray.Dataset
+        Dims ``(h, theta0, omega30|r_C|Omega0, amplitude)`` (or ``(point, amplitude)``);
+        variables varpi2, stable (closed form, -1 where no steady motion), status, t_end,
+        max_dtheta, frequency, growth_rate, energy_drift, stable_simulated, ... (module
+        docstring for the rules).
+    """
+    if not isinstance(grid, SweepGrid):
+        raise ParameterError("grid must be a SweepGrid")
+    perturbation = perturbation or Perturbation()
+    t_end = check_real("t_end", t_end, low=0.0, low_open=True, high=1e9)
+    rtol = check_real("rtol", rtol, low=1e-15, high=1.0)
+    atol = check_real("atol", atol, low=1e-300, high=1.0)
+    if executor not in ("serial", "threads", "dask"):
+        raise ParameterError(f"executor must be serial, threads or dask, got {executor!r}")
+    if not (isinstance(chunk, int) and chunk >= 1):
+        raise ParameterError("chunk must be an integer >= 1")
+    if workers is not None and not (isinstance(workers, int) and workers >= 1):
+        raise ParameterError("workers must be an integer >= 1")
+    n = int(np.prod(grid.shape)) * len(perturbation.kick)
+    spec = _Spec(grid, perturbation, t_end, rtol, atol, int(max_steps), chunk, n)
+    n_chunks = -(-n // chunk)
+    folder = None
+    done: set = set()
+    results: dict = {}
+    if out is not None:
+        out = _check_out(out)
+        folder = out.with_name(out.name + ".partial")
+        if folder.exists():
+            try:
+                old = (folder / "spec.json").read_text()
+            except OSError:
+                old = None
+            if old != spec.to_json():
+                shutil.rmtree(folder)
+        folder.mkdir(exist_ok=True)
+        (folder / "spec.json").write_text(spec.to_json())
+        done = _done_chunks(folder)
+    todo = [k for k in range(n_chunks) if k not in done]
+    t0 = time.perf_counter()
+    count = [sum(min(n, (k + 1) * chunk) - k * chunk for k in done), 0]
+
+    def finished(k, res):
+        if folder is not None:
+            _write_chunk(folder, k, res)
+        else:
+            results[k] = res
+        m = min(n, (k + 1) * chunk) - k * chunk
+        count[0] += m
+        count[1] += m
+        if progress is not None:
+            dt = time.perf_counter() - t0
+            rate = count[1] / dt if dt > 0 else float("nan")
+            progress(count[0], n, rate, (n - count[0]) / rate if rate > 0 else float("nan"))
+
+    if executor == "dask":
+        _run_dask(spec, todo, workers, dask_address, finished)
+    else:
+        nt = 1 if executor == "serial" else workers
+        import numba
+
+        old_nt = numba.get_num_threads()
+        try:
+            for k in todo:
+                finished(k, _compute_chunk(spec, k, nt if nt else old_nt))
+        finally:
+            numba.set_num_threads(old_nt)
+    if folder is not None:
+        parts = [dict(np.load(folder / f"chunk_{k:06d}.npz")) for k in range(n_chunks)]
+    else:
+        parts = [results[k] for k in range(n_chunks)]
+    cols = {name: np.concatenate([p[name] for p in parts]) for name in parts[0]}
+    ds = _dataset(spec, cols, executor)
+    if out is not None:
+        _save(ds, out)
+        shutil.rmtree(folder, ignore_errors=True)
+    return ds
+
+
+def _run_dask(spec, todo, workers, address, finished):
+    from dask.distributed import Client, LocalCluster, as_completed
+
+    cluster = None
+    if address in (None, "local"):
+        cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
+                               processes=True, dashboard_address=None)
+        client = Client(cluster)
+    else:
+        client = Client(address)
+    try:
+        futs = {client.submit(_compute_chunk, spec, k, 1, pure=False): k for k in todo}
+        for fut in as_completed(futs):
+            finished(futs[fut], fut.result())
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+
+
+def open_sweep(path):
+    """Open a finished sweep store (``.zarr`` or ``.nc``) as an ``xarray.Dataset``."""
+    import xarray as xr
+
+    path = Path(os.fspath(path))
+    if not path.exists():
+        raise ParameterError(f"path: no sweep at {str(path)!r}")
+    if path.suffix == ".nc":
+        return xr.load_dataset(path)
+    return xr.open_zarr(path, consolidated=False).load()
+
+
+def basin_sweep(grid: SweepGrid, t_end: float, *, kick_max: float = 1.0, rounds: int = 10,
+                out=None, executor: str = "serial", workers: int | None = None,
+                chunk: int = 2048, rtol: float = 1e-9, atol: float = 1e-9,
+                max_steps: int = 1_000_000, progress=None):
+    """Finite-amplitude stability: per steady motion the largest kick in omega1 (bisection
+    over ``[0, kick_max]``, ``rounds`` rounds, each round one batch over the whole grid)
+    that still gives bounded motion (``stable_simulated``) over ``t_end``.
+
+    Returns an ``xarray.Dataset`` with ``kick_basin`` (lower end of the final bracket; 0
+    where even the first trial failed, ``kick_max`` where it never failed, NaN where there
+    is no steady motion) and the closed-form ``varpi2``, ``stable``.
+    """
+    kick_max = check_real("kick_max", kick_max, low=0.0, low_open=True, high=100.0)
+    if not (isinstance(rounds, int) and 1 <= rounds <= 60):
+        raise ParameterError("rounds must be an integer in [1, 60]")
+    if grid.states is not None:
+        raise ParameterError("basin_sweep needs a grid of steady motions, not states")
+    shape = grid.shape
+    lo = np.zeros(shape)
+    hi = np.full(shape, kick_max)
+    first = None
+    # round 0 tests kick_max itself; then bisection
+    trial = hi.copy()
+    for r in range(rounds + 1):
+        # one batch: every point with its own kick (the grid's states list)
+        ds = _basin_round(grid, trial, t_end, executor, workers, chunk, rtol, atol, max_steps)
+        ok = ds["stable_simulated"].values.reshape(shape) == 1
+        if first is None:
+            first = ds
+            lo = np.where(ok, kick_max, 0.0)
+            hi = np.where(ok, kick_max, kick_max)
+        else:
+            lo = np.where(ok, trial, lo)
+            hi = np.where(ok, hi, trial)
+        trial = 0.5 * (lo + hi)
+        if progress is not None:
+            progress(r + 1, rounds + 1, float("nan"), float("nan"))
+    import xarray as xr
+
+    st = first["stable"].values.reshape(shape)
+    basin = np.where(st >= 0, lo, np.nan)
+    dims = ("h", "theta0", grid.second)
+    res = xr.Dataset(
+        {"kick_basin": (dims, basin), "varpi2": (dims, first["varpi2"].values.reshape(shape)),
+         "stable": (dims, st)},
+        coords={"h": list(grid.h), "theta0": list(grid.theta0),
+                grid.second: list(getattr(grid, grid.second))})
+    res.attrs.update({"ground": grid.ground, "t_end": t_end, "kick_max": kick_max,
+                      "rounds": rounds, "rtol": rtol, "atol": atol,
+                      "rule": f"bounded: completed and max_dtheta <= {BOUND_FACTOR} * kick"})
+    if out is not None:
+        _save(res, _check_out(out))
+    return res
+
+
+def _basin_round(grid, kicks, t_end, executor, workers, chunk, rtol, atol, max_steps):
+    """One batch: the steady state of every grid point with its own kick."""
+    spec = _Spec(grid, Perturbation(kick=1.0), t_end, rtol, atol, int(max_steps), chunk,
+                 int(np.prod(grid.shape)))
+    x0, h, theta_ref, varpi2, stable, _ = _setup(spec, 0, spec.n)
+    k = np.ravel(kicks)
+    x0[:, 1] = k
+    ok = np.all(np.isfinite(x0), axis=1)
+    import numba
+
+    from . import _sweep_core as core
+
+    nt = 1 if executor == "serial" else (workers or numba.get_num_threads())
+    old = numba.get_num_threads()
+    numba.set_num_threads(min(nt, numba.config.NUMBA_NUM_THREADS))
+    try:
+        out = np.full((spec.n, core.NCOL), np.nan)
+        if ok.any():
+            k1 = 0.25 + h[ok] ** 2 / 3.0
+            out[ok] = core.run_batch(grid.ground == "rough", h[ok], k1, np.full(k1.shape, 0.5),
+                                     np.ascontiguousarray(x0[ok]), theta_ref[ok], k[ok],
+                                     GROW_LO, GROW_HI, t_end, rtol, atol, max_steps)
+    finally:
+        numba.set_num_threads(old)
+    bounded = (out[:, 0] == core.COMPLETED) & (out[:, 2] <= BOUND_FACTOR * k)
+    import xarray as xr
+
+    return xr.Dataset({"stable_simulated": ("p", np.where(ok, bounded, False).astype(np.int8)),
+                       "varpi2": ("p", varpi2), "stable": ("p", stable)})
