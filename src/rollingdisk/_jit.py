@@ -9,8 +9,8 @@ code), compiling it with an empty cache 10-20 s; the same integrator run uncompi
 * if the run is not done after :data:`PY_BUDGET` seconds and the on-disk cache is ready,
   loads the compiled code (0.5 s) and continues with it (the very same steps: the run
   pauses and resumes);
-* if the cache is cold, starts :func:`start_background_compile`: a detached, low-priority
-  process that compiles and fills the on-disk cache, then marks it ready; the run goes on
+* if the cache is cold, starts :func:`start_background_compile`: a detached process that
+  compiles and fills the on-disk cache, then marks it ready; the run goes on
   uncompiled and switches once the mark appears.  The user never waits for a compiler.
 
 The mark is a file named after the sources (path, size and modification time of
@@ -95,8 +95,8 @@ def mark_ready() -> None:
 
 
 def start_background_compile() -> bool:
-    """Start, once per process, a detached low-priority process that fills the compile
-    cache; True if one was started.  Never waits for it."""
+    """Start, once per process, a detached process that fills the compile cache; True if
+    one was started.  Never waits for it."""
     global _started
     if _started or ready() or importlib.util.find_spec("numba") is None:
         return False
@@ -116,11 +116,8 @@ def start_background_compile() -> bool:
 
 
 def _compile_here() -> int:
-    """The background compiler: one at a time (a lock), at low priority."""
-    try:
-        os.nice(10)
-    except (AttributeError, OSError):
-        pass
+    """The background compiler: one at a time (a lock).  Not niced: a long run waits for
+    it, a short one (under PY_BUDGET) never starts it."""
     folder = _folder()
     folder.mkdir(parents=True, exist_ok=True)
     lock = open(folder / "rollingdisk-jit.lock", "a")  # noqa: SIM115 - held until exit
