@@ -106,9 +106,10 @@ _MAX_FACTOR = 10.0
 _ERR_EXP = -1.0 / 8.0  # error estimator of order 7
 _NSUB = 8  # guards sampled on the dense output at 7 inner points of a step
 #: Dense sampling of a guard is skipped in a step where it stays above this many times its
-#: change over the step (both ends) and above _GUARD_FLOOR: see _needs_sampling.
+#: spread over the step (start, a stage, end) and above _GUARD_FLOOR: see _needs_sampling.
 _GUARD_SPAN = 16.0
 _GUARD_FLOOR = 0.05
+_MID_STAGE = 9  # node C[9] = 0.6 of the step
 
 # status codes shared with rollingdisk.events
 RUNNING, COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED, STEP_BUDGET = (
@@ -389,20 +390,28 @@ def _locate_on_dense(rough, h, y, y_new, F, side, use, g_old, g_new, ytmp, g, g2
     return -1, 1.0
 
 
-def _needs_sampling(g_old, g_new, use):
-    """Whether a guard may reach 0 inside the step from ``g_old`` to ``g_new``: one of them
-    is within ``_GUARD_SPAN`` times its change over the step, or ``_GUARD_FLOOR``, of 0.
+def _needs_sampling(g_old, g_mid, g_new, use):
+    """Whether a guard may reach 0 inside a step: its values at the start, at the stage
+    ``_MID_STAGE`` of the step and at the end come within ``_GUARD_SPAN`` times their
+    spread, or within ``_GUARD_FLOOR``, of 0.
 
-    A guard far from 0 compared with how much it moves in a step cannot dip below 0 inside
-    the step (the steps resolve the motion to the tolerance); elsewhere it is sampled on the
+    A guard far from 0 compared with how much it moves in a step (the three values see a
+    turning point inside it too) cannot dip below 0 there; elsewhere it is sampled on the
     dense output at ``j / _NSUB`` of the step and located there.  Cheap: the guards at the
-    step's ends are needed anyway."""
+    step's ends are needed anyway, the stage state is one short sum away."""
     for k in range(3):
         if use[k]:
-            lo = min(g_old[k], g_new[k])
-            if lo <= max(_GUARD_SPAN * abs(g_new[k] - g_old[k]), _GUARD_FLOOR):
+            lo = min(g_old[k], g_mid[k], g_new[k])
+            hi = max(g_old[k], g_mid[k], g_new[k])
+            if lo <= max(_GUARD_SPAN * (hi - lo), _GUARD_FLOOR):
                 return True
     return False
+
+
+def _mid_guards(rough, h, y, dt, K, side, ytmp, g):
+    """The guards at the stage state ``_MID_STAGE`` of a step (node ``_C[_MID_STAGE]``)."""
+    _combine(y, dt, _A[_MID_STAGE], K, _MID_STAGE, ytmp)
+    _side_guards(rough, h, ytmp, side, g)
 
 
 def _grow(ts, ys, m):
@@ -557,7 +566,10 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atolv, max_step, first_ste
         # dense output of the whole step: for the guards inside it, for t_eval and for
         # keep_dense (3 more right-hand sides)
         _side_guards(rough, h, y_new, side, g_new)
-        sample = any_guard and _needs_sampling(g_old, g_new, use_guards)
+        sample = False
+        if any_guard:
+            _mid_guards(rough, h, y, dt, K, side, ytmp, g_tmp)
+            sample = _needs_sampling(g_old, g_tmp, g_new, use_guards)
         dense = sample or keep_dense or (
             has_t_eval and ie < t_eval.shape[0] and t_eval[ie] < t_new)
         if dense:

@@ -161,16 +161,18 @@ class _LazyDense:
         return self.get()(t)
 
 
-def _needs_sampling(guards, g_old, g_new):
-    """The rule of the compiled integrator (``_dop853._needs_sampling``) on guard lists."""
-    from ._dop853 import _needs_sampling as rule
+def _needs_sampling(guards, solver, g_old, g_new):
+    """The rule of the compiled integrator (``_dop853._needs_sampling``) on a scipy step:
+    the guards at its start, at the stage state ``_MID_STAGE`` and at its end."""
+    from . import _dop853 as d
 
+    k = d._MID_STAGE
+    y_mid = solver.y_old + solver.h_previous * (d._A[k, :k] @ solver.K[:k])
     use = np.zeros(3, dtype=bool)
-    a = np.ones(3)
-    b = np.ones(3)
+    a, m, b = np.ones(3), np.ones(3), np.ones(3)
     for g, va, vb in zip(guards, g_old, g_new):
-        use[g.index], a[g.index], b[g.index] = True, va, vb
-    return rule(a, b, use)
+        use[g.index], a[g.index], m[g.index], b[g.index] = True, va, g(0.0, y_mid), vb
+    return d._needs_sampling(a, m, b, use)
 
 
 class _Counter:
@@ -282,7 +284,7 @@ def run_scipy(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_ev
         g_new = [g(t_new, solver.y) for g in guards]
         t_stop, y_stop = t_new, solver.y
         hit = _locate_guards(guards, sol, t_old, t_new, g_old, g_new) \
-            if guards and _needs_sampling(guards, g_old, g_new) else None
+            if guards and _needs_sampling(guards, solver, g_old, g_new) else None
         if hit is not None:
             t_stop, y_stop, code = hit[0], sol(hit[0]), hit[1].code
             if hit[1].code == _ev.EDGE_CONTACT:

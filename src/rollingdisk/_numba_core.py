@@ -31,7 +31,8 @@ _KERNELS = ("_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs", 
 _INTEGRATOR = ("_rhs", "_guards", "_combine", "_step", "_dense_tail", "_dense_coefficients",
                "_dense_value", "_error_norm", "_error_norm_v", "_rms", "initial_step",
                "initial_step_v", "_initial_step_scaled", "_side_guards", "_first_fired",
-               "_guard_root", "_locate_on_dense", "_needs_sampling", "_grow", "integrate")
+               "_guard_root", "_locate_on_dense", "_needs_sampling", "_mid_guards", "_grow",
+               "integrate")
 _DISPATCHERS = _KERNELS + _INTEGRATOR
 
 

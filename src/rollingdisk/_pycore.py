@@ -94,8 +94,8 @@ def _build():
              "_smooth_rhs", "_reduced_state", "_reduced_rhs", "_normal_force",
              "_side_normal_force", "_guards", "_step", "_dense_coefficients", "_error_norm",
              "initial_step", "initial_step_v", "_initial_step_scaled", "_side_guards",
-             "_first_fired", "_guard_root", "_locate_on_dense", "_needs_sampling", "_grow",
-             "integrate")
+             "_first_fired", "_guard_root", "_locate_on_dense", "_needs_sampling",
+             "_mid_guards", "_grow", "integrate")
     for name in names:
         f = ns[name]
         ns[name] = types.FunctionType(f.__code__, ns, f.__name__, f.__defaults__,
