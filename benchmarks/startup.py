@@ -56,6 +56,27 @@ def run(src: Path, args: list[str], env_extra: dict | None = None, repeat: int =
     return statistics.median(times)
 
 
+HEAVY = ("numba", "scipy", "scipy.integrate", "matplotlib", "sympy")
+
+
+def heavy_imports(src: Path, args: list[str] | None, code: str | None = None) -> str:
+    """``python -X importtime``: the cumulative import time of ``rollingdisk`` and of each
+    heavy package the command imports (none, for a command that does not integrate)."""
+    env = dict(os.environ, PYTHONPATH=str(src))
+    cmd = [sys.executable, "-X", "importtime"] + (
+        ["-c", code] if code is not None else ["-m", "rollingdisk", *args])
+    res = subprocess.run(cmd, env=env, capture_output=True, text=True)
+    cum = {}
+    for line in res.stderr.splitlines():
+        if line.startswith("import time:") and "|" in line:
+            _, c, name = line.split("|")
+            if c.strip().isdigit():
+                cum[name.strip()] = int(c) / 1e6
+    found = [f"{m} {cum[m]:.2f} s" for m in HEAVY if m in cum]
+    own = f"rollingdisk {cum.get('rollingdisk', float('nan')):.3f} s"
+    return own + "; heavy: " + (", ".join(found) if found else "none")
+
+
 def export(ref: str, dest: Path) -> Path | None:
     """The ``src`` folder of commit ``ref`` exported into ``dest``, or None if unknown."""
     arch = subprocess.run(["git", "-C", str(ROOT), "archive", ref, "src"], capture_output=True)
@@ -119,6 +140,12 @@ def main(argv=None) -> int:
     print(f"\nsimulate warm / scipy path (same tree): {ratio:.2f}  (target <= 0.5)")
     print(f"first simulate, empty cache: {now['first simulate (empty cache)']:.2f} s "
           "(target <= 5 s)")
+    print("\npython -X importtime (cumulative, this tree):")
+    for name, cmd, code in (("import rollingdisk", None, "import rollingdisk"),
+                            ("rollingdisk --help", ["--help"], None),
+                            ("rollingdisk steady", STEADY, None),
+                            ("rollingdisk simulate T=100", SIMULATE, None)):
+        print(f"  {name:28s} {heavy_imports(ROOT / 'src', cmd, code)}")
     if "atlas (warm)" in now:
         print(f"atlas: {now['atlas (warm)']:.1f} s warm (target <= 8), "
               f"{now['atlas (cold)']:.1f} s cold (target <= 15)")
