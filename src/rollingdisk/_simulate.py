@@ -3,9 +3,10 @@
 The equations of motion of :mod:`rollingdisk.equations` (eqs. 1, 2, 37, 38 on rough ground;
 2, 8, 49 on smooth ground) are integrated from any initial state by :func:`simulate`, or from
 a perturbed steady motion by :func:`simulate_steady`.  Two drivers take the same steps:
-``method="dop853"`` (default), a compiled (numba) Dormand-Prince 8(5,3) with scipy's step
-size control (:mod:`rollingdisk._numba_core`), run in chunks of at most about 0.05 s so that
-progress is reported and Ctrl-C (``KeyboardInterrupt``) or SIGTERM
+``method="dop853"`` (default), rollingdisk's Dormand-Prince 8(5,3) with scipy's step size
+control (:mod:`rollingdisk._dop853`; uncompiled while a run is short, compiled by numba once
+it is long enough to be worth loading, see :mod:`rollingdisk._jit`), run in chunks of at
+most about 0.05 s so that progress is reported and Ctrl-C (``KeyboardInterrupt``) or SIGTERM
 (:class:`rollingdisk._files.Terminated`) surfaces between chunks; and ``method="scipy"``,
 scipy's own ``DOP853`` stepped one step at a time.  Both locate the guards on the dense
 output inside every step, count steps against ``max_steps`` (status ``"step-budget"``), call
@@ -260,7 +261,9 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
         :data:`~rollingdisk.equations.SMOOTH_STATE`; finite, ``|theta| < pi/2`` and
         ``theta != 0`` if ``h > 0``, energy and rates of change finite.
     method : {"auto", "dop853", "scipy"}
-        ``"dop853"``: compiled DOP853 (numba).  ``"scipy"``: scipy's ``DOP853`` stepped on
+        ``"dop853"``: rollingdisk's DOP853, uncompiled for a short run and compiled (numba)
+        once a run has taken ``rollingdisk._jit.PY_BUDGET`` (0.4) s; the same steps either
+        way.  ``"scipy"``: scipy's ``DOP853`` stepped on
         the numpy right-hand side.  ``"auto"``: ``"dop853"``, or ``"scipy"`` when user
         ``events`` are given.
     rtol : float
