@@ -11,7 +11,9 @@ compiling them) to a namespace in which
   :func:`_error_norm_v`, :func:`_dense_value`, :func:`_rms`, and ``_rhs`` hands the
   kernels a list of Python floats.
 
-The step-size control, the guards, pauses and output are those of ``_dop853`` itself, so a
+Where ``math`` raises on inf or nan (IEEE arithmetic would not), :func:`integrate` runs the
+chunk again in a namespace with numpy's own scalars.  The step-size control, the guards,
+pauses and output are those of ``_dop853`` itself, so a
 run begun here and continued compiled takes the steps of a compiled run (up to round-off in
 the order of the sums).  Only this namespace sees the shim: the public element-wise API of
 :mod:`rollingdisk.equations` keeps numpy.  No numba, no ``scipy.integrate``.
@@ -88,7 +90,7 @@ def _rms(v, scale):
     return math.sqrt(float(np.mean((v / scale) ** 2)))
 
 
-def _build():
+def _build(fast=True):
     ns = {**_eq.__dict__, **_src.__dict__}
     names = ("_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs",
              "_smooth_rhs", "_reduced_state", "_reduced_rhs", "_normal_force",
@@ -100,13 +102,15 @@ def _build():
         f = ns[name]
         ns[name] = types.FunctionType(f.__code__, ns, f.__name__, f.__defaults__,
                                       f.__closure__)
-    ns.update(np=_SCALAR_NP, _combine=_combine, _dense_tail=_dense_tail,
+    ns.update(np=_SCALAR_NP if fast else np, _combine=_combine, _dense_tail=_dense_tail,
               _dense_value=_dense_value, _error_norm_v=_error_norm_v, _rms=_rms)
     rough_rhs, smooth_rhs, reduced_rhs = ns["_rough_rhs"], ns["_smooth_rhs"], \
         ns["_reduced_rhs"]
 
     def _rhs(rough, h, y, out):
-        v = y.tolist()  # Python floats: math-speed scalar arithmetic in the kernels
+        # Python floats: math-speed scalar arithmetic in the kernels; numpy's floats (IEEE
+        # inf and nan, as compiled) in the fallback
+        v = y.tolist() if fast else y
         if len(v) == 4:
             out[:] = reduced_rhs(rough, h, v)
         elif rough:
@@ -119,5 +123,18 @@ def _build():
 
 
 _ns = _build()
-integrate = _ns["integrate"]
+_integrate_fast = _ns["integrate"]
+_integrate_ieee = _build(fast=False)["integrate"]
 RUNNING = _src.RUNNING
+
+
+def integrate(*args):
+    """``_dop853.integrate`` uncompiled.  Python's ``math`` raises where IEEE arithmetic
+    (numba, numpy) gives inf or nan (``math.sin(inf)``, a float divided by 0): then the
+    chunk is run again from its start with numpy scalars, which behave as compiled code
+    (its inputs are not modified, so it takes the same steps)."""
+    try:
+        return _integrate_fast(*args)
+    except (ValueError, ArithmeticError):
+        with np.errstate(all="ignore"):
+            return _integrate_ieee(*args)
