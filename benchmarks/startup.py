@@ -16,7 +16,12 @@ commit ``BASELINE_REF`` below, exported with ``git archive``), so each line read
 "now / before".  Targets (issue 9): simulate warm <= 0.5 x the scipy path; first run <= 5 s;
 atlas <= 8 s warm and <= 15 s cold.
 
+With ``--long``, also ``simulate --t-end 30000`` with an empty cache (the background compiler
+at work while the run goes on uncompiled) and warm.  Then ``python -X importtime``: which
+heavy packages each kind of command imports.
+
 Run:  python benchmarks/startup.py [--repeat 3] [--baseline REF | --no-baseline] [--no-atlas]
+      [--long]
 """
 
 from __future__ import annotations
@@ -86,7 +91,11 @@ def export(ref: str, dest: Path) -> Path | None:
     return dest / "src"
 
 
-def measure(src: Path, repeat: int, atlas: bool, tmp: Path) -> dict[str, float]:
+LONG = [*SIMULATE[:-3], "--t-end", "30000", "--json"]
+
+
+def measure(src: Path, repeat: int, atlas: bool, tmp: Path, long: bool = False
+            ) -> dict[str, float]:
     out = {}
     fresh = lambda name: {"NUMBA_CACHE_DIR": str(Path(tempfile.mkdtemp(dir=tmp, prefix=name)))}  # noqa: E731
     warm_cache = fresh("warm")
@@ -97,6 +106,9 @@ def measure(src: Path, repeat: int, atlas: bool, tmp: Path) -> dict[str, float]:
     out["simulate T=100 (warm)"] = run(src, SIMULATE, env_extra=warm_cache, repeat=repeat)
     out["simulate T=100 --method scipy"] = run(src, [*SIMULATE, "--method", "scipy"],
                                                repeat=repeat)
+    if long:  # a long first run: the background compiler against compiling first
+        out["first simulate T=30000 (empty cache)"] = run(src, LONG, env_extra=fresh("long"))
+        out["simulate T=30000 (warm)"] = run(src, LONG, env_extra=warm_cache)
     if atlas:
         adir = tmp / f"atlas-{len(os.listdir(tmp))}"
         cold = {**fresh("cold"), "MPLCONFIGDIR": tempfile.mkdtemp(dir=tmp, prefix="mpl")}
@@ -112,10 +124,12 @@ def main(argv=None) -> int:
     ap.add_argument("--baseline", default=BASELINE_REF, help="git ref of the baseline tree")
     ap.add_argument("--no-baseline", action="store_true")
     ap.add_argument("--no-atlas", action="store_true")
+    ap.add_argument("--long", action="store_true",
+                    help="also a long run (T = 30000) with an empty and a warm cache")
     args = ap.parse_args(argv)
     with tempfile.TemporaryDirectory() as t:
         tmp = Path(t)
-        now = measure(ROOT / "src", args.repeat, not args.no_atlas, tmp)
+        now = measure(ROOT / "src", args.repeat, not args.no_atlas, tmp, args.long)
         before = None
         if not args.no_baseline:
             (tmp / "base").mkdir()
@@ -123,7 +137,7 @@ def main(argv=None) -> int:
             if src is None:
                 print(f"(baseline {args.baseline} not found in this clone: skipped)")
             else:
-                before = measure(src, args.repeat, not args.no_atlas, tmp)
+                before = measure(src, args.repeat, not args.no_atlas, tmp, args.long)
     w = max(len(k) for k in now)
     head = f"{'command':<{w}}  {'now [s]':>9}"
     if before:

@@ -50,7 +50,8 @@ for _name in _DISPATCHERS:
     globals()[_name] = _compile(_name)
 del _name
 
-# constants and status codes, as in _dop853
+# constants and status codes, as in _dop853 (_dop: scipy's table of coefficients)
+_dop = _src._dop
 _NS, _NSX, _NF, _NSUB = _src._NS, _src._NSX, _src._NF, _src._NSUB
 _A, _B, _C, _E3, _E5, _AX, _D = _src._A, _src._B, _src._C, _src._E3, _src._E5, _src._AX, _src._D
 _SAFETY, _MIN_FACTOR, _MAX_FACTOR, _ERR_EXP = (_src._SAFETY, _src._MIN_FACTOR,
