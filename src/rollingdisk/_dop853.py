@@ -563,8 +563,8 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atolv, max_step, first_ste
             break
         n_steps += 1
         n_here += 1
-        # dense output of the whole step: for the guards inside it, for t_eval and for
-        # keep_dense (3 more right-hand sides)
+        # dense output of the whole step (3 more right-hand sides): for the guards inside it
+        # where one may reach 0 (its ends and one stage say so), for t_eval and keep_dense
         _side_guards(rough, h, y_new, side, g_new)
         sample = False
         if any_guard:
