@@ -198,3 +198,23 @@ def test_uncompiled_run_falls_back_to_ieee_arithmetic(uncompiled, monkeypatch):
     assert calls and tr.status == "completed"
     assert abs(tr.n_steps - ref.n_steps) <= 1
     np.testing.assert_allclose(tr.y[:, -1], ref.y[:, -1], rtol=1e-9, atol=1e-9)
+
+
+def test_a_long_run_waits_for_the_compiler_only_when_no_core_is_idle(monkeypatch):
+    monkeypatch.setattr(os, "cpu_count", lambda: 2)
+    monkeypatch.setattr(os, "getloadavg", lambda: (2.0, 2.0, 2.0))
+    assert _jit.worth_waiting(1.0, 0.01)  # 99 s more uncompiled, both cores busy
+    assert not _jit.worth_waiting(1.0, 0.5)  # 1 s more: run on
+    assert not _jit.worth_waiting(1.0, 0.0) and not _jit.worth_waiting(1.0, 1.0)
+    monkeypatch.setattr(os, "cpu_count", lambda: 16)
+    assert not _jit.worth_waiting(1.0, 0.01)  # idle cores: run on beside the compiler
+
+
+def test_waiting_ends_at_once_when_no_compiler_is_at_work(tmp_path, monkeypatch):
+    import time
+
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path))
+    monkeypatch.setattr(_jit, "_proc", None)
+    t0 = time.monotonic()
+    assert _jit.wait_ready(timeout=30) is False
+    assert time.monotonic() - t0 < 5

@@ -71,22 +71,27 @@ def _dense_solution(segments, t_end):
     return OdeSolution(ts, pieces)
 
 
-def _pick_core(state, elapsed):
+def _pick_core(state, elapsed, fraction):
     """The integrator to run the next chunk with: the compiled one if it is loaded, or once
     the run has spent ``_jit.PY_BUDGET`` seconds uncompiled and the cache is ready (loading
     it then); else the uncompiled one, after starting a background compile of a cold
-    cache (never waiting for it)."""
+    cache.  A run far from done on a machine with no idle core waits for that compiler
+    rather than slow it down (``_jit.worth_waiting``)."""
     from . import _jit, _simulate
 
     if _simulate._core is not None:
         return _simulate._core, True
     if elapsed >= _jit.PY_BUDGET:
+        if not _jit.ready() and not state.get("spawned"):
+            state["spawned"] = True
+            _jit.start_background_compile()
+        elif (not _jit.ready() and not state.get("waited")
+              and _jit.worth_waiting(elapsed, fraction)):
+            state["waited"] = True
+            _jit.wait_ready()
         if _jit.ready():
             _simulate.jit_compile()  # loads from the on-disk cache
             return _simulate._core, True
-        if not state.get("spawned"):
-            state["spawned"] = True
-            _jit.start_background_compile()
     from . import _pycore
 
     return _pycore, False
@@ -114,7 +119,7 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
     later = False
     segments = []
     while True:
-        core, compiled = _pick_core(state, time.perf_counter() - start)
+        core, compiled = _pick_core(state, time.perf_counter() - start, (tc - t0) / (t1 - t0))
         te_c = te[np.searchsorted(te, tc, side="right"):] if later and has_t_eval else te
         w = time.perf_counter()
         args = (rough, disk.h, tc, yc, t1, marks[i_mark], rtol, atolv, max_step, h_next, use,

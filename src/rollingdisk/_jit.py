@@ -11,7 +11,10 @@ code), compiling it with an empty cache 10-20 s; the same integrator run uncompi
   pauses and resumes);
 * if the cache is cold, starts :func:`start_background_compile`: a detached process that
   compiles and fills the on-disk cache, then marks it ready; the run goes on
-  uncompiled and switches once the mark appears.  The user never waits for a compiler.
+  uncompiled and switches once the mark appears.  A short or medium run never waits for a
+  compiler; a run that would need more than :data:`COMPILE_GUESS` seconds more
+  uncompiled on a machine with no idle core waits for the compiler instead of competing
+  with it for the CPU (:func:`worth_waiting`): then it costs what compiling first did.
 
 The mark is a file named after the sources (path, size and modification time of
 ``_dop853.py``, ``equations.py``, ``_numba_core.py`` and numba's own ``__init__.py``) and
@@ -35,8 +38,15 @@ from pathlib import Path
 #: (about what loading it costs, so a run never pays more than twice the best choice).
 PY_BUDGET = 0.4
 
+#: About how long a compile takes (seconds): a run projected to need more than this
+#: uncompiled waits for the background compiler when no core is idle (see worth_waiting).
+COMPILE_GUESS = 20.0
+#: The longest a run waits for the background compiler before going on uncompiled.
+MAX_WAIT = 300.0
+
 _PKG = Path(__file__).resolve().parent
 _started = False
+_proc = None
 
 
 def _folder() -> Path:
@@ -97,7 +107,7 @@ def mark_ready() -> None:
 def start_background_compile() -> bool:
     """Start, once per process, a detached process that fills the compile cache; True if
     one was started.  Never waits for it."""
-    global _started
+    global _started, _proc
     if _started or ready() or importlib.util.find_spec("numba") is None:
         return False
     _started = True
@@ -107,12 +117,62 @@ def start_background_compile() -> bool:
     src = str(_PKG.parent)
     env["PYTHONPATH"] = src + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
     try:
-        subprocess.Popen([sys.executable, "-m", "rollingdisk._jit"], env=env,
+        _proc = subprocess.Popen([sys.executable, "-m", "rollingdisk._jit"], env=env,
                          stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
                          stderr=subprocess.DEVNULL, start_new_session=True, close_fds=True)
     except OSError:
         return False
     return True
+
+
+def worth_waiting(elapsed: float, fraction: float) -> bool:
+    """Whether a run that has spent ``elapsed`` seconds uncompiled on ``fraction`` of its
+    span should wait for the background compiler: it would need more than
+    :data:`COMPILE_GUESS` seconds more uncompiled, and no core is idle (load average of one
+    minute at least the number of cores less one half), so that running on would only slow
+    the compiler down.  With idle cores it runs on while the compiler works beside it."""
+    if not 0.0 < fraction < 1.0:
+        return False
+    remaining = elapsed * (1.0 - fraction) / fraction
+    try:
+        busy = os.getloadavg()[0] >= (os.cpu_count() or 1) - 0.5
+    except (AttributeError, OSError):  # pragma: no cover - no load average (Windows)
+        busy = True
+    return remaining > COMPILE_GUESS and busy
+
+
+def _compiling_now() -> bool:
+    """Whether some process holds the compiler's lock."""
+    try:
+        import fcntl
+    except ImportError:  # pragma: no cover
+        return _proc is not None and _proc.poll() is None
+    try:
+        with open(_folder() / "rollingdisk-jit.lock", "a") as lock:
+            try:
+                fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except OSError:
+                return True
+            fcntl.flock(lock, fcntl.LOCK_UN)
+            return False
+    except OSError:
+        return False
+
+
+def wait_ready(timeout: float = MAX_WAIT) -> bool:
+    """Wait (polling, interruptible) until the cache is ready; False if no compiler is at
+    work any more without having made it ready, or after ``timeout`` seconds."""
+    import time
+
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        if ready():
+            return True
+        ours_alive = _proc is not None and _proc.poll() is None
+        if not ours_alive and not _compiling_now():
+            return ready()
+        time.sleep(0.2)
+    return ready()
 
 
 def _compile_here() -> int:
