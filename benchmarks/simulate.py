@@ -6,11 +6,19 @@ One job, the same for both: a rough-ground disk (h = 0.1) on a steady circle
 ``scipy.integrate.solve_ivp(method="DOP853")`` on the plain numpy right-hand side
 ``rollingdisk.equations_of_motion``.  Prints wall time, steps/s, right-hand-side
 evaluations/s and relative energy drift of each, and their ratio, and the cost of the
-guards (located on the dense output inside every step) against a run without them.  The JIT
-compile time is measured apart: cold (empty numba cache, in a subprocess) and warm (loading
-the cache).
+guards (located on the dense output inside every step where they may reach 0) against a run
+without them.  The JIT compile time is measured apart: cold (empty numba cache, in a
+subprocess) and warm (loading the cache); and the same integrator uncompiled (the path a
+short run takes).
 
-Run:  python benchmarks/simulate.py [--T 1000] [--repeat 3]
+Then, if heyoka (a Taylor integrator, PyPI) is importable, the side-by-side at equal energy
+drift: heyoka's ODE is built from the very kernels of rollingdisk.equations (their ``np``
+bound to heyoka's sin/cos), for each heyoka tolerance its drift is measured (max over 20001
+points of the run), simulate's loosest tolerance (``error_control="reduced"`` and
+``"full"``) with a drift no larger is found, and both are timed alternately, ``--repeat-hy``
+pairs; the median of the per-pair ratios is printed.
+
+Run:  python benchmarks/simulate.py [--T 1000] [--repeat 3] [--repeat-hy 15] [--no-cold]
 """
 
 from __future__ import annotations
@@ -52,6 +60,7 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--T", type=float, default=1000.0)
     ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--repeat-hy", type=int, default=15)
     ap.add_argument("--no-cold", action="store_true", help="skip the cold-compile measurement")
     args = ap.parse_args(argv)
     rtol = atol = 1e-10
@@ -110,7 +119,110 @@ def main(argv=None) -> int:
           f"without guards ({blind.wall_time:.4f} s, {blind.n_rhs} RHS evals)")
     ok = base_wall / sim_wall >= 5 and sim_drift <= base_drift * (1 + 1e-6) + 1e-15
     print("target (>= 5x at equal or better energy drift):", "met" if ok else "NOT met")
+    uncompiled(disk, y0, args.T, rtol)
+    versus_heyoka(disk, y0, args.T, args.repeat_hy)
     return 0
+
+
+def uncompiled(disk, y0, T, rtol):
+    """The same integrator run uncompiled (rollingdisk._pycore), as a short run does."""
+    from rollingdisk import _jit, _simulate
+
+    core, budget = _simulate._core, _jit.PY_BUDGET
+    _simulate._core, _jit.PY_BUDGET = None, float("inf")
+    try:
+        T = min(T, 100.0)
+        tr = simulate(disk, "rough", (0.0, T), y0, rtol=rtol, atol=rtol)
+    finally:
+        _simulate._core, _jit.PY_BUDGET = core, budget
+    print(f"uncompiled (CPython), T = {T:g}: {tr.wall_time:.3f} s, {tr.n_steps} steps, "
+          f"{tr.n_steps / tr.wall_time:.3g} steps/s")
+
+
+def heyoka_system(disk):
+    """heyoka's ODE from the kernels of rollingdisk.equations themselves (nothing restated):
+    their ``np`` bound to heyoka's functions; ``sgn(theta) = 1`` (the job stays at
+    theta > 0, as the guards check)."""
+    import types
+
+    import heyoka as hy
+
+    from rollingdisk import equations as eq
+
+    class HeyokaNp:
+        sin = staticmethod(hy.sin)
+        cos = staticmethod(hy.cos)
+        sign = staticmethod(lambda x: 1.0)
+
+    ns = dict(eq.__dict__, np=HeyokaNp())
+    for name in ("_geometry", "_rough_omega_dot", "_rough_rhs"):
+        f = eq.__dict__[name]
+        ns[name] = types.FunctionType(f.__code__, ns, name)
+    xs = hy.make_vars(*eq.ROUGH_STATE)
+    return list(zip(xs, ns["_rough_rhs"](disk.h, xs)))
+
+
+def grid_drift(disk, Y):
+    from rollingdisk.equations import energy
+
+    E = energy(disk, "rough", Y)
+    return float(np.max(np.abs(E - E[0])) / abs(E[0]))
+
+
+def versus_heyoka(disk, y0, T, repeat):
+    try:
+        import heyoka as hy
+    except ImportError:
+        print("\nheyoka not importable: no comparison (pip install heyoka)")
+        return
+    import statistics
+
+    grid = np.linspace(0.0, T, 20001)
+    system = heyoka_system(disk)
+    tols = [10.0 ** (-9 - k / 4) for k in range(0, 21)]
+    drift_of = {}
+
+    def sim_drift(tol, control):
+        if (tol, control) not in drift_of:
+            tr = simulate(disk, "rough", (0.0, T), y0, rtol=tol, atol=tol, t_eval=grid,
+                          error_control=control)
+            drift_of[tol, control] = grid_drift(disk, tr.y)
+        return drift_of[tol, control]
+
+    print(f"\nvs heyoka {hy.__version__} (Taylor) at equal energy drift (max over {grid.size}"
+          f" points), median of {repeat} alternating pairs:")
+    print(f"{'heyoka tol':>10s}{'drift':>10s}{'wall [ms]':>10s}   {'simulate':20s}{'drift':>10s}"
+          f"{'wall [ms]':>10s}{'steps':>7s}{'ratio':>7s}")
+    best = None
+    for htol in (1e-11, 1e-12, 1e-13):
+        ta = hy.taylor_adaptive(system, y0, tol=htol)
+        ta.time = 0.0
+        ta.state[:] = y0
+        hdrift = grid_drift(disk, ta.propagate_grid(grid)[-1].T)
+        for control in ("reduced", "full"):
+            tol = next((t for t in tols if sim_drift(t, control) <= hdrift), None)
+            if tol is None:
+                print(f"{htol:10.0e}{hdrift:10.2e}   simulate ({control}) never reaches it")
+                continue
+            hw, sw, ratios = [], [], []
+            for _ in range(repeat):
+                ta.time = 0.0
+                ta.state[:] = y0
+                t0 = time.perf_counter()
+                ta.propagate_until(T)
+                hw.append(time.perf_counter() - t0)
+                tr = simulate(disk, "rough", (0.0, T), y0, rtol=tol, atol=tol,
+                              error_control=control)
+                sw.append(tr.wall_time)
+                ratios.append(sw[-1] / hw[-1])
+            ratio = statistics.median(ratios)
+            name = f"{control} tol {tol:.2g}"
+            print(f"{htol:10.0e}{hdrift:10.2e}{1e3 * statistics.median(hw):10.2f}   "
+                  f"{name:20s}{drift_of[tol, control]:10.2e}"
+                  f"{1e3 * statistics.median(sw):10.2f}{tr.n_steps:7d}{ratio:7.2f}")
+            best = ratio if best is None else min(best, ratio)
+    print(f"best simulate / heyoka wall-time ratio at equal or better drift: {best:.2f} "
+          f"(target <= 1.0)")
 
 
 if __name__ == "__main__":

@@ -16,7 +16,12 @@ commit ``BASELINE_REF`` below, exported with ``git archive``), so each line read
 "now / before".  Targets (issue 9): simulate warm <= 0.5 x the scipy path; first run <= 5 s;
 atlas <= 8 s warm and <= 15 s cold.
 
+With ``--long``, also ``simulate --t-end 30000`` with an empty cache (the background compiler
+at work while the run goes on uncompiled) and warm.  Then ``python -X importtime``: which
+heavy packages each kind of command imports.
+
 Run:  python benchmarks/startup.py [--repeat 3] [--baseline REF | --no-baseline] [--no-atlas]
+      [--long]
 """
 
 from __future__ import annotations
@@ -56,6 +61,27 @@ def run(src: Path, args: list[str], env_extra: dict | None = None, repeat: int =
     return statistics.median(times)
 
 
+HEAVY = ("numba", "scipy", "scipy.integrate", "matplotlib", "sympy")
+
+
+def heavy_imports(src: Path, args: list[str] | None, code: str | None = None) -> str:
+    """``python -X importtime``: the cumulative import time of ``rollingdisk`` and of each
+    heavy package the command imports (none, for a command that does not integrate)."""
+    env = dict(os.environ, PYTHONPATH=str(src))
+    cmd = [sys.executable, "-X", "importtime"] + (
+        ["-c", code] if code is not None else ["-m", "rollingdisk", *args])
+    res = subprocess.run(cmd, env=env, capture_output=True, text=True)
+    cum = {}
+    for line in res.stderr.splitlines():
+        if line.startswith("import time:") and "|" in line:
+            _, c, name = line.split("|")
+            if c.strip().isdigit():
+                cum[name.strip()] = int(c) / 1e6
+    found = [f"{m} {cum[m]:.2f} s" for m in HEAVY if m in cum]
+    own = f"rollingdisk {cum.get('rollingdisk', float('nan')):.3f} s"
+    return own + "; heavy: " + (", ".join(found) if found else "none")
+
+
 def export(ref: str, dest: Path) -> Path | None:
     """The ``src`` folder of commit ``ref`` exported into ``dest``, or None if unknown."""
     arch = subprocess.run(["git", "-C", str(ROOT), "archive", ref, "src"], capture_output=True)
@@ -65,7 +91,11 @@ def export(ref: str, dest: Path) -> Path | None:
     return dest / "src"
 
 
-def measure(src: Path, repeat: int, atlas: bool, tmp: Path) -> dict[str, float]:
+LONG = [*SIMULATE[:-3], "--t-end", "30000", "--json"]
+
+
+def measure(src: Path, repeat: int, atlas: bool, tmp: Path, long: bool = False
+            ) -> dict[str, float]:
     out = {}
     fresh = lambda name: {"NUMBA_CACHE_DIR": str(Path(tempfile.mkdtemp(dir=tmp, prefix=name)))}  # noqa: E731
     warm_cache = fresh("warm")
@@ -76,6 +106,12 @@ def measure(src: Path, repeat: int, atlas: bool, tmp: Path) -> dict[str, float]:
     out["simulate T=100 (warm)"] = run(src, SIMULATE, env_extra=warm_cache, repeat=repeat)
     out["simulate T=100 --method scipy"] = run(src, [*SIMULATE, "--method", "scipy"],
                                                repeat=repeat)
+    if long:  # a long first run: the background compiler against compiling first
+        out["first simulate T=30000 (empty cache)"] = run(src, LONG, env_extra=fresh("long"))
+        # a short run fills no cache any more: fill it as a user would, then run warm
+        run(src, [], env_extra=warm_cache,
+            code="import rollingdisk as r; getattr(r, 'jit_compile', lambda: 0)()")
+        out["simulate T=30000 (warm)"] = run(src, LONG, env_extra=warm_cache)
     if atlas:
         adir = tmp / f"atlas-{len(os.listdir(tmp))}"
         cold = {**fresh("cold"), "MPLCONFIGDIR": tempfile.mkdtemp(dir=tmp, prefix="mpl")}
@@ -91,10 +127,12 @@ def main(argv=None) -> int:
     ap.add_argument("--baseline", default=BASELINE_REF, help="git ref of the baseline tree")
     ap.add_argument("--no-baseline", action="store_true")
     ap.add_argument("--no-atlas", action="store_true")
+    ap.add_argument("--long", action="store_true",
+                    help="also a long run (T = 30000) with an empty and a warm cache")
     args = ap.parse_args(argv)
     with tempfile.TemporaryDirectory() as t:
         tmp = Path(t)
-        now = measure(ROOT / "src", args.repeat, not args.no_atlas, tmp)
+        now = measure(ROOT / "src", args.repeat, not args.no_atlas, tmp, args.long)
         before = None
         if not args.no_baseline:
             (tmp / "base").mkdir()
@@ -102,7 +140,7 @@ def main(argv=None) -> int:
             if src is None:
                 print(f"(baseline {args.baseline} not found in this clone: skipped)")
             else:
-                before = measure(src, args.repeat, not args.no_atlas, tmp)
+                before = measure(src, args.repeat, not args.no_atlas, tmp, args.long)
     w = max(len(k) for k in now)
     head = f"{'command':<{w}}  {'now [s]':>9}"
     if before:
@@ -119,6 +157,12 @@ def main(argv=None) -> int:
     print(f"\nsimulate warm / scipy path (same tree): {ratio:.2f}  (target <= 0.5)")
     print(f"first simulate, empty cache: {now['first simulate (empty cache)']:.2f} s "
           "(target <= 5 s)")
+    print("\npython -X importtime (cumulative, this tree):")
+    for name, cmd, code in (("import rollingdisk", None, "import rollingdisk"),
+                            ("rollingdisk --help", ["--help"], None),
+                            ("rollingdisk steady", STEADY, None),
+                            ("rollingdisk simulate T=100", SIMULATE, None)):
+        print(f"  {name:28s} {heavy_imports(ROOT / 'src', cmd, code)}")
     if "atlas (warm)" in now:
         print(f"atlas: {now['atlas (warm)']:.1f} s warm (target <= 8), "
               f"{now['atlas (cold)']:.1f} s cold (target <= 15)")

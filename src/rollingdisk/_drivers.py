@@ -1,9 +1,12 @@
 """The two integration drivers behind :func:`rollingdisk.simulate` (private).
 
-:func:`run_compiled` runs the numba DOP853 of :mod:`rollingdisk._numba_core` in chunks of
-about ``_CHUNK_SECONDS`` of wall time (the integrator pauses without changing its steps), so
-that ``progress`` is called, the step budget is kept and ``KeyboardInterrupt`` or
-``Terminated`` (SIGTERM) surfaces between chunks.  :func:`run_scipy` steps scipy's own
+:func:`run_compiled` runs the DOP853 of :mod:`rollingdisk._dop853` in chunks of about
+``_CHUNK_SECONDS`` of wall time (the integrator pauses without changing its steps), so that
+``progress`` is called, the step budget is kept and ``KeyboardInterrupt`` or ``Terminated``
+(SIGTERM) surfaces between chunks.  Each chunk runs compiled (:mod:`rollingdisk._numba_core`)
+or uncompiled (:mod:`rollingdisk._pycore`), as :mod:`rollingdisk._jit` decides: a run starts
+uncompiled unless the compiled code is already loaded, and switches between chunks.
+:func:`run_scipy` steps scipy's own
 ``DOP853`` one step at a time and does the same in Python.  Both sample the guards of
 :mod:`rollingdisk.events` on the dense output inside every step (at ``j / 8`` of it) and
 locate the first root on the interpolant; the earliest event of a step wins, an edge
@@ -20,7 +23,7 @@ from . import events as _ev
 from .equations import equations_of_motion, state_index
 
 _CHUNK_SECONDS = 0.05
-_NSUB = 8  # as _numba_core._NSUB
+_NSUB = 8  # as _dop853._NSUB
 
 
 def _marks(t0, t1, progress):
@@ -68,18 +71,41 @@ def _dense_solution(segments, t_end):
     return OdeSolution(ts, pieces)
 
 
+def _pick_core(state, elapsed, fraction):
+    """The integrator to run the next chunk with: the compiled one if it is loaded, or once
+    the run has spent ``_jit.PY_BUDGET`` seconds uncompiled and the cache is ready (loading
+    it then); else the uncompiled one, after starting a background compile of a cold
+    cache.  A run far from done on a machine with no idle core waits for that compiler
+    rather than slow it down (``_jit.worth_waiting``)."""
+    from . import _jit, _simulate
+
+    if _simulate._core is not None:
+        return _simulate._core, True
+    if elapsed >= _jit.PY_BUDGET:
+        if not _jit.ready() and not state.get("spawned"):
+            state["spawned"] = True
+            _jit.start_background_compile()
+        elif (not _jit.ready() and not state.get("waited")
+              and _jit.worth_waiting(elapsed, fraction)):
+            state["waited"] = True
+            _jit.wait_ready()
+        if _jit.ready():
+            _simulate.jit_compile()  # loads from the on-disk cache
+            return _simulate._core, True
+    from . import _pycore
+
+    return _pycore, False
+
+
 def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_eval,
                  dense_output, events, guards, max_steps, progress, out, finish):
-    from . import _simulate
-
-    _simulate.jit_compile()
-    core = _simulate._core
     rough = ground == "rough"
     use = np.zeros(3, dtype=np.bool_)
     for g in guards:
         use[g.index] = True
     theta0 = y[state_index(ground, "theta")]
     side = 1.0 if theta0 >= 0 else -1.0
+    atolv = np.broadcast_to(np.asarray(atol, dtype=float), y.shape).copy()
     has_t_eval = t_eval is not None
     te = t_eval if has_t_eval else np.zeros(1)
     marks = _marks(t0, t1, progress)
@@ -88,18 +114,22 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
     n_steps = n_rhs = 0
     h_next = 0.0 if first_step is None else first_step
     tc, yc = t0, y
-    chunk = 2000
+    chunk = {True: 2000, False: 50}
+    state = {}
     later = False
     segments = []
     while True:
+        core, compiled = _pick_core(state, time.perf_counter() - start, (tc - t0) / (t1 - t0))
         te_c = te[np.searchsorted(te, tc, side="right"):] if later and has_t_eval else te
         w = time.perf_counter()
-        (ts_c, ys_c, ns, nr, code, event, h_next, tc, yc, st, sdt, sy, sF) = _call(
-            core.integrate, rough, disk.h, tc, yc, t1, marks[i_mark], rtol, atol, max_step,
-            h_next, use, side, te_c, has_t_eval, max_steps - n_steps, chunk, dense_output)
+        args = (rough, disk.h, tc, yc, t1, marks[i_mark], rtol, atolv, max_step, h_next, use,
+                side, te_c, has_t_eval, max_steps - n_steps, chunk[compiled], dense_output)
+        (ts_c, ys_c, ns, nr, code, event, h_next, tc, yc, st, sdt, sy, sF) = (
+            _call(core.integrate, *args) if compiled else core.integrate(*args))
         w = time.perf_counter() - w
         if ns > 0:  # aim at _CHUNK_SECONDS per chunk
-            chunk = int(min(max(chunk * _CHUNK_SECONDS / max(w, 1e-6), 100), 1_000_000))
+            chunk[compiled] = int(min(max(chunk[compiled] * _CHUNK_SECONDS / max(w, 1e-6),
+                                          10), 1_000_000))
         n_steps += ns
         n_rhs += nr
         # without t_eval a later chunk starts with the previous one's last point
@@ -110,14 +140,44 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
             segments.extend(zip(st, sdt, sy, sF))
         t_now = float(ts_c[-1]) if event >= 0 and len(ts_c) else tc
         i_mark, crossed = _advance(marks, i_mark, tc)
-        if progress is not None and (code != core.RUNNING or crossed):
+        if progress is not None and (code != _ev.RUNNING or crossed):
             progress(float((t_now - t0) / (t1 - t0)))
-        if code != core.RUNNING:
+        if code != _ev.RUNNING:
             break
     wall = time.perf_counter() - start
     sol = _dense_solution(segments, t_now) if dense_output else None
     return finish(disk, ground, "dop853", out, code, t_now, n_steps, n_rhs, wall,
                   max_steps, t1, sol=sol)
+
+
+class _LazyDense:
+    """The dense output of the solver's last step, formed on first use."""
+
+    def __init__(self, solver):
+        self.solver = solver
+        self.dense = None
+
+    def get(self):
+        if self.dense is None:
+            self.dense = self.solver.dense_output()
+        return self.dense
+
+    def __call__(self, t):
+        return self.get()(t)
+
+
+def _needs_sampling(guards, solver, g_old, g_new):
+    """The rule of the compiled integrator (``_dop853._needs_sampling``) on a scipy step:
+    the guards at its start, at the stage state ``_MID_STAGE`` and at its end."""
+    from . import _dop853 as d
+
+    k = d._MID_STAGE
+    y_mid = solver.y_old + solver.h_previous * (d._A[k, :k] @ solver.K[:k])
+    use = np.zeros(3, dtype=bool)
+    a, m, b = np.ones(3), np.ones(3), np.ones(3)
+    for g, va, vb in zip(guards, g_old, g_new):
+        use[g.index], a[g.index], m[g.index], b[g.index] = True, va, g(0.0, y_mid), vb
+    return d._needs_sampling(a, m, b, use)
 
 
 class _Counter:
@@ -225,10 +285,11 @@ def run_scipy(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_ev
             break
         n_steps += 1
         t_old, t_new = solver.t_old, solver.t
-        sol = solver.dense_output()
+        sol = _LazyDense(solver)  # 3 right-hand sides, only if the step needs them
         g_new = [g(t_new, solver.y) for g in guards]
         t_stop, y_stop = t_new, solver.y
-        hit = _locate_guards(guards, sol, t_old, t_new, g_old, g_new) if guards else None
+        hit = _locate_guards(guards, sol, t_old, t_new, g_old, g_new) \
+            if guards and _needs_sampling(guards, solver, g_old, g_new) else None
         if hit is not None:
             t_stop, y_stop, code = hit[0], sol(hit[0]), hit[1].code
             if hit[1].code == _ev.EDGE_CONTACT:
@@ -258,7 +319,7 @@ def run_scipy(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_ev
             t_stop, y_stop, code = stop_user[0], sol(stop_user[0]), _ev.COMPLETED
             message = f"completed: stopped by user event {stop_user[1]} at t = {t_stop:.12g}"
         if dense_output:
-            segments.append((t_old, sol))
+            segments.append((t_old, sol.get()))
         if te is None:
             out.add([t_stop], [y_stop])
         else:

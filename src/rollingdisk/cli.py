@@ -311,7 +311,12 @@ def _add_simulate(sub) -> None:
     p.add_argument("--rtol", type=float, default=None, help="relative tolerance")
     p.add_argument("--atol", type=float, default=None, help="absolute tolerance")
     p.add_argument("--method", choices=("dop853", "scipy"), default="dop853",
-                   help="compiled DOP853 (default) or scipy's DOP853")
+                   help="rollingdisk's DOP853 (default; compiled once a run is long enough "
+                   "to be worth it) or scipy's DOP853")
+    p.add_argument("--error-control", dest="error_control", choices=("full", "reduced"),
+                   default="full", help="tolerances on the whole state (default) or on "
+                   "(theta, omega1, omega2, omega3) only, the quadratures X_C, Y_C, psi, phi "
+                   "riding along (fewer steps for the same energy drift)")
     p.add_argument("--max-steps", dest="max_steps", type=_positive_int, default=2_000_000,
                    help="step budget: stop with status step-budget after this many steps "
                    "(default 2000000, about 20 s)")
@@ -444,7 +449,6 @@ def _finite_or_none(value):
 def _run_simulate(args) -> int:
     import contextlib
     import json
-    import threading
 
     from ._files import atomic_file, check_writable
     from ._simulate import DEFAULT_ATOL, DEFAULT_RTOL, simulate, simulate_steady
@@ -461,7 +465,7 @@ def _run_simulate(args) -> int:
         raise ParameterError(f"t_end must be a finite number > 0, got {args.t_end!r}")
     options = dict(rtol=DEFAULT_RTOL if args.rtol is None else args.rtol,
                    atol=DEFAULT_ATOL if args.atol is None else args.atol, method=args.method,
-                   max_steps=args.max_steps)
+                   max_steps=args.max_steps, error_control=args.error_control)
     if motion is None:
         y0 = _parse_state(args.state, args.ground)
         from .equations import state_index
@@ -469,16 +473,8 @@ def _run_simulate(args) -> int:
         y0[state_index(args.ground, "theta")] += args.perturb
         y0[state_index(args.ground, "omega1")] += args.kick
     bar = None if args.json else _ProgressBar(sys.stderr)
-    notice = None
     if bar is not None:
         options["progress"] = bar
-        if args.method == "dop853":
-            # the first run after an install compiles the integrator (about 20 s): say so
-            notice = threading.Timer(2.0, lambda: bar.shown or print(
-                "compiling the integrator (first use only; cached afterwards) ...",
-                file=sys.stderr, flush=True))
-            notice.daemon = True
-            notice.start()
     csv_cm = (atomic_file(args.out, "w", newline="") if args.out is not None
               else contextlib.nullcontext())
     try:
@@ -491,8 +487,6 @@ def _run_simulate(args) -> int:
             else:
                 traj = simulate(disk, args.ground, (0.0, args.t_end), y0, **options)
     finally:
-        if notice is not None:
-            notice.cancel()
         if bar is not None:
             bar.close()
     kept = summary.kept(traj)

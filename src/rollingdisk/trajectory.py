@@ -65,7 +65,7 @@ class Trajectory:
     n_steps, n_rhs : int
         Accepted integration steps and right-hand-side evaluations.
     method : str
-        ``"dop853"`` (compiled) or ``"scipy"``.
+        ``"dop853"`` (rollingdisk's DOP853, compiled or not) or ``"scipy"``.
     t_event : float or None
         Time of the guard event, if one fired.
     wall_time : float
