@@ -31,8 +31,6 @@ import time
 from collections.abc import Callable, Sequence
 
 import numpy as np
-from scipy.integrate import DOP853
-from scipy.optimize import brentq
 
 from . import equations as _eq
 from ._simulate import _check_state
@@ -87,6 +85,8 @@ def slip_direction(disk: Disk, ground: Coulomb, y) -> tuple[float, float] | None
     mu_k = ground.mu_k
     coeffs = ground.coefficients
     y = np.asarray(y, dtype=float)
+
+    from scipy.optimize import brentq
 
     def parts(a):
         ex, ey = math.cos(a), math.sin(a)
@@ -178,6 +178,14 @@ class _Run:
         theta = z[5]
         return [end, F_z, theta * self.side if self.h > 0 else 1.0,
                 0.5 * math.pi - abs(theta) - self.alpha_min]
+
+
+def _DOP853():
+    """scipy's DOP853 class, imported when a Coulomb run starts (``import rollingdisk``
+    must not load ``scipy.integrate``, 0.3 s)."""
+    from scipy.integrate import DOP853
+
+    return DOP853
 
 
 def _inertial_slip(h, z):
@@ -292,7 +300,7 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     t = t0
     while True:  # one mode segment per pass
         run.side = 1.0 if z[5] >= 0 else -1.0
-        solver = DOP853(run.rhs(mode), t, z, t1, rtol=rtol, atol=atol, max_step=max_step)
+        solver = _DOP853()(run.rhs(mode), t, z, t1, rtol=rtol, atol=atol, max_step=max_step)
         g_old = run.events(mode, z)
         switched = False
         while solver.status == "running":
@@ -410,6 +418,8 @@ def _start_sliding(run, disk, ground, z):
 
 def _first_event(run, mode, sol, ta, tb, g_old, edge, guards):
     """The first event in ``(ta, tb]`` on the dense output ``sol``: ``(index, time)``."""
+    from scipy.optimize import brentq
+
     active = [True, guards, edge, guards]
     ts = np.linspace(ta, tb, _N_SAMPLE)
     prev = g_old
