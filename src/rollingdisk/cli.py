@@ -561,10 +561,14 @@ def _add_figures(sub) -> None:
                    help=f"half-thickness (default {DEFAULT_H:g}; not used by --kind surface, "
                    "which spans h)")
     p.add_argument("--kind", required=True,
-                   choices=("existence", "stability", "surface", "all-omega30"),
+                   choices=("existence", "stability", "surface", "all-omega30", "nonlinear",
+                            "basin"),
                    help="existence: (theta0, r_C) plane; stability: (theta0, omega30) "
                    "plane; surface: varpi^2 = 0 in (theta0, h, omega30); all-omega30: "
-                   "(theta0, h) region stable for every omega30")
+                   "(theta0, h) region stable for every omega30; nonlinear: simulated "
+                   "stability of kicked steady circles in (theta0, omega30), T = 100 "
+                   "(a 40 x 40 sweep); basin: the largest kick that stays bounded there "
+                   "(8 bisection rounds)")
     p.add_argument("--out", required=True,
                    help=f"image file ({', '.join('.' + f for f in IMAGE_FORMATS)})")
     dpi_arg(p, 110)
@@ -632,13 +636,49 @@ def _run_map(args) -> int:
         m = plotting.plot_stability_map(args.h, args.ground)
     elif args.kind == "surface":
         m = plotting.plot_varpi2_surface(args.ground)
+    elif args.kind in ("nonlinear", "basin"):
+        m = _sweep_map(args, plotting)
     else:
         m = plotting.plot_all_omega30_stable(args.ground, mark_h=args.h)
-    fig = m.ax.figure
+    fig = m["ax"].figure if isinstance(m, dict) else m.ax.figure
     fig.tight_layout()
     plotting.save_figure(fig, args.out, dpi=args.dpi)
     print(args.out)
     return 0
+
+
+def _sweep_map(args, plotting) -> dict:
+    """The nonlinear (or basin) map of ``rollingdisk map``: a 40 x 40 sweep of kicked
+    steady circles over theta0 in (0.05, 1.5) rad and omega30 in (0.1, 3), T = 100."""
+    import numpy as np
+
+    from .sweep import Perturbation, SweepGrid, basin_sweep, run_sweep
+
+    grid = SweepGrid(args.ground, h=args.h, theta0=np.linspace(0.05, 1.5, 40),
+                     omega30=np.linspace(0.1, 3.0, 40))
+    bar = _SweepMapBar("trajectories" if args.kind == "nonlinear" else "bisection rounds")
+    try:
+        if args.kind == "nonlinear":
+            ds = run_sweep(grid, 100.0, perturbation=Perturbation(kick=1e-3), progress=bar)
+            return plotting.plot_nonlinear_map(ds)
+        ds = basin_sweep(grid, 100.0, kick_max=0.5, rounds=8, progress=bar)
+        return plotting.plot_basin_map(ds)
+    finally:
+        bar.close()
+
+
+class _SweepMapBar:
+    """One progress line on stderr for the sweep behind a map (``done/total what``)."""
+
+    def __init__(self, what: str):
+        self.what = what
+
+    def __call__(self, done, total=None, *rest):
+        total = f"/{total}" if total else ""
+        print(f"\rmap: {done}{total} {self.what}", end="", file=sys.stderr, flush=True)
+
+    def close(self):
+        print(file=sys.stderr, flush=True)
 
 
 def _run_animate(args) -> int:
