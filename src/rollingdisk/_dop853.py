@@ -251,6 +251,19 @@ def _error_norm_v(y, y_new, K, dt, rtol, atolv):
     return abs(dt) * e5 / np.sqrt((e5 + 0.01 * e3) * n)
 
 
+def _step_factor(err, rejected):
+    """The factor for the next step size after a step with error norm ``err``: scipy's
+    DOP853 control.  Accepted (``err < 1``): ``min(10, 0.9 err^(-1/8))``, at most 1 right
+    after a rejection; rejected: ``max(0.2, 0.9 err^(-1/8))``, 0.2 if ``err`` is not finite.
+    """
+    if err < 1.0:
+        factor = _MAX_FACTOR if err == 0.0 else min(_MAX_FACTOR, _SAFETY * err ** _ERR_EXP)
+        return min(1.0, factor) if rejected else factor
+    if err == err and err < np.inf:
+        return max(_MIN_FACTOR, _SAFETY * err ** _ERR_EXP)
+    return _MIN_FACTOR
+
+
 def _rms(v, scale):
     acc = 0.0
     for i in range(v.shape[0]):
@@ -545,19 +558,10 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atolv, max_step, first_ste
                     finite = False
             err = _error_norm_v(y, y_new, K, dt, rtol, atolv) if finite else np.inf
             if err < 1.0:
-                if err == 0.0:
-                    factor = _MAX_FACTOR
-                else:
-                    factor = min(_MAX_FACTOR, _SAFETY * err ** _ERR_EXP)
-                if rejected:
-                    factor = min(1.0, factor)
-                h_next = h_abs * factor
+                h_next = h_abs * _step_factor(err, rejected)
                 accepted = True
             else:
-                if finite and err == err:
-                    h_abs *= max(_MIN_FACTOR, _SAFETY * err ** _ERR_EXP)
-                else:
-                    h_abs *= _MIN_FACTOR
+                h_abs *= _step_factor(err, rejected)
                 rejected = True
         if status == FAILED:
             break

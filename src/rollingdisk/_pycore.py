@@ -94,7 +94,8 @@ def _build(fast=True):
     ns = {**_eq.__dict__, **_src.__dict__}
     names = ("_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs",
              "_smooth_rhs", "_reduced_state", "_reduced_rhs", "_normal_force",
-             "_side_normal_force", "_guards", "_step", "_dense_coefficients", "_error_norm",
+             "_side_normal_force", "_guards", "_step", "_step_factor", "_dense_coefficients",
+             "_error_norm",
              "initial_step", "initial_step_v", "_initial_step_scaled", "_side_guards",
              "_first_fired", "_guard_root", "_locate_on_dense", "_needs_sampling",
              "_mid_guards", "_grow", "integrate")

@@ -17,16 +17,13 @@ import numba
 import numpy as np
 
 from ._numba_core import (
-    _ERR_EXP,
-    _MAX_FACTOR,
-    _MIN_FACTOR,
     _NSX,
-    _SAFETY,
     _error_norm,
     _geometry,
     _guards,
     _rhs,
     _step,
+    _step_factor,
     initial_step,
 )
 
@@ -132,17 +129,10 @@ def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, ato
                 dt = t_end - t
             _step(rough, h, t, y, f, dt, K, ytmp, y_new, f_new)
             err = _error_norm(y, y_new, K, dt, rtol, atol)
+            h_abs = dt * _step_factor(err, rejected)
             if err < 1.0:
-                if err == 0.0:
-                    factor = _MAX_FACTOR
-                else:
-                    factor = min(_MAX_FACTOR, _SAFETY * err ** _ERR_EXP)
-                if rejected:
-                    factor = min(1.0, factor)
-                h_abs = dt * factor
                 accepted = True
             else:
-                h_abs = dt * max(_MIN_FACTOR, _SAFETY * err ** _ERR_EXP)
                 rejected = True
         if not accepted:
             status = FAILED
