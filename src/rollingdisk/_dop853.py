@@ -22,6 +22,10 @@ error norm (it is still integrated through the same stages), which is how the qu
 The coefficients are scipy's own: the file ``scipy/integrate/_ivp/dop853_coefficients.py``
 is loaded directly (:func:`_load_coefficients`), without executing ``scipy.integrate``'s
 ``__init__`` (0.3 s), so both integrators use one table and nothing is transcribed.
+
+Why one module of ~650 lines: every function here is compiled by numba into one
+namespace (and run uncompiled in another), so the integrator, its dense output and its
+guard location stay in one source file that both can re-bind.
 """
 
 from __future__ import annotations
