@@ -21,6 +21,7 @@ from __future__ import annotations
 import html
 import json
 import math
+import os
 import sys
 import time
 from dataclasses import dataclass, field
@@ -175,7 +176,7 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
     h = check_h(h)
     target = check_replaceable(out_dir, ATLAS_FILES, name="out_dir")
     chosen = example_motions(h)  # before any work: fails for a disk with no unstable circle
-    pr = _Progress(8, stream=stream, enabled=bool(progress))
+    pr = _Progress(7, stream=stream, enabled=bool(progress))
     try:
         with atomic_dir(target) as out:
             files, motions = _write_atlas(h, out, chosen, quick=bool(quick), pr=pr)
@@ -253,34 +254,46 @@ def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[l
     _save(fig, out / "all_omega30.png", dpi, files)
     pr.done()
 
-    # 5. the compiled integrator: about 20 s the first time, then loaded from the cache --
-    pr.step("integrator (compiled on first use, cached afterwards)")
-    from ._simulate import jit_compile
-
-    jit_compile()
-    pr.done()
-
-    # 6./7. two steady motions, simulated -----------------------------------------------
+    # (no compile step: the two short runs below run the integrator uncompiled, so a cold
+    # atlas never waits for numba; see docs/simulation.md)
+    # 6./7. two steady motions, simulated; the first animation is drawn in a second process
+    # while this one goes on (the two cores of a laptop), the second one here
     motions = {}
-    for kind in ("stable", "unstable"):
-        pr.step(f"{kind} steady circle: simulate, plot, animate")
-        chosen_motion = getattr(chosen, kind)
-        theta0, Omega0 = chosen_motion.theta0, chosen_motion.Omega0
-        t_end = 12.0 if quick else 30.0
-        kick = 0.05 if kind == "stable" else 1e-4
-        motion, stab, traj = steady_trajectory(h, "rough", theta0, Omega0=Omega0,
-                                               kick=kick, t_end=t_end,
-                                               n_out=300 if quick else 1500)
-        fig = Figure(figsize=(9.0, 6.5))
-        plotting.plot_trajectory(traj, fig, theta0=theta0,
-                                 title=f"{kind} steady circle, rough ground, h = {h:.4g}")
-        _save(fig, out / f"motion_{kind}.png", dpi, files)
-        gif = animate(traj, out / f"motion_{kind}.gif", n_frames=6 if quick else 60,
-                      fps=12, dpi=55 if quick else 70,
+    helpers = []
+    try:
+        for kind in ("stable", "unstable"):
+            pr.step(f"{kind} steady circle: simulate, plot, animate")
+            chosen_motion = getattr(chosen, kind)
+            theta0, Omega0 = chosen_motion.theta0, chosen_motion.Omega0
+            t_end = 12.0 if quick else 30.0
+            kick = 0.05 if kind == "stable" else 1e-4
+            motion, stab, traj = steady_trajectory(h, "rough", theta0, Omega0=Omega0,
+                                                   kick=kick, t_end=t_end,
+                                                   n_out=300 if quick else 1500)
+            fig = Figure(figsize=(9.0, 6.5))
+            plotting.plot_trajectory(traj, fig, theta0=theta0,
+                                     title=f"{kind} steady circle, rough ground, h = {h:.4g}")
+            _save(fig, out / f"motion_{kind}.png", dpi, files)
+            gif = out / f"motion_{kind}.gif"
+            kw = dict(n_frames=6 if quick else 60, fps=12, dpi=55 if quick else 70,
                       title=f"{kind} circle, h = {h:.4g}")
-        files.append(gif)
-        motions[kind] = _motion_record(motion, stab, traj, kick)
-        pr.done(f"status {motions[kind]['status']}")
+            if kind == "stable" and (os.cpu_count() or 1) > 1:
+                helpers.append(_start_animation(traj, gif, kw))
+            else:
+                animate(traj, gif, **kw)
+            files.append(gif)
+            motions[kind] = _motion_record(motion, stab, traj, kick)
+            pr.done(f"status {motions[kind]['status']}")
+        for proc in helpers:
+            proc.join()
+            if proc.exitcode != 0:
+                raise RuntimeError(f"the animation process ended with exit code "
+                                   f"{proc.exitcode}")
+    finally:
+        for proc in helpers:  # interrupted: stop the helper too (the folder is dropped)
+            if proc.is_alive():
+                proc.terminate()
+                proc.join()
 
     # 8. index page ------------------------------------------------------------------------
     pr.step("index.html")
@@ -288,6 +301,18 @@ def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[l
                                     encoding="utf-8")
     pr.done()
     return files, motions
+
+
+def _start_animation(traj, path, kw):
+    """Start :func:`rollingdisk.animation.animate` in a child process (written atomically
+    there); returns the process."""
+    import multiprocessing
+
+    from .animation import animate
+
+    proc = multiprocessing.Process(target=animate, args=(traj, path), kwargs=kw, daemon=True)
+    proc.start()
+    return proc
 
 
 def _floats(d):
