@@ -14,6 +14,7 @@ Permissions follow the umask, as for a file created with ``open``.
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import shutil
 import signal
@@ -173,6 +174,34 @@ def atomic_file(path, mode: str = "w", **open_kw) -> Iterator:
         raise
 
 
+def _swap_in(tmp: Path, target: Path, attempts: int = 50) -> None:
+    """Rename the folder ``tmp`` to ``target``, moving an existing ``target`` aside first.
+
+    Another run may swap its own folder in between our moving the old one aside and our
+    rename (the rename then fails: the target is not empty); we move that one aside too and
+    try again, so the run that finishes last leaves its whole folder.
+    """
+    for _ in range(attempts):
+        old = None
+        try:
+            if target.exists():
+                old = Path(tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".old",
+                                            dir=target.parent))
+                with contextlib.suppress(FileNotFoundError):  # another run moved it first
+                    os.replace(target, old / "x")
+            try:
+                os.replace(tmp, target)
+                return
+            except OSError as exc:
+                if exc.errno not in (errno.ENOTEMPTY, errno.EEXIST):
+                    raise
+        finally:
+            if old is not None:
+                shutil.rmtree(old, ignore_errors=True)
+    raise OSError(errno.EBUSY, f"could not put the finished folder in place of {target} "
+                  f"(other runs kept replacing it)", str(target))
+
+
 @contextlib.contextmanager
 def atomic_dir(path) -> Iterator[Path]:
     """Build a folder under a temporary name beside ``path``; on success swap it in.
@@ -187,14 +216,7 @@ def atomic_dir(path) -> Iterator[Path]:
     try:
         os.chmod(tmp, 0o777 & ~_umask())
         yield tmp
-        old = None
-        if target.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".old",
-                                        dir=target.parent))
-            os.replace(target, old / "x")
-        os.replace(tmp, target)
-        if old is not None:
-            shutil.rmtree(old, ignore_errors=True)
+        _swap_in(tmp, target)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
