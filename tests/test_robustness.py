@@ -294,18 +294,30 @@ def test_sweep_api_of_the_edges(tmp_path_factory, value, which):
 
 
 # ------------------------------------------------------------------ signals
-def _interrupt(argv, tmp_path, sig, after: float):
+def _interrupt(argv, tmp_path, sig, after: float, marker: str | None = None):
+    """Run the CLI, send ``sig`` ``after`` seconds after ``marker`` appeared on stderr (or
+    after the start), return (exit code, stderr)."""
+    import threading
+
     env = dict(os.environ, PYTHONPATH=SRC, MPLBACKEND="Agg")
     proc = subprocess.Popen([sys.executable, "-m", "rollingdisk", *argv], cwd=tmp_path,
-                            env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                            env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            text=True)
+    chunks: list[str] = []
+    reader = threading.Thread(target=lambda: chunks.extend(iter(lambda: proc.stderr.read(1), "")))
+    reader.start()
+    deadline = time.monotonic() + 60
+    while marker and marker not in "".join(chunks) and time.monotonic() < deadline:
+        time.sleep(0.01)
     time.sleep(after)
     proc.send_signal(sig)
     try:
-        out, err = proc.communicate(timeout=60)
+        proc.wait(timeout=60)
     except subprocess.TimeoutExpired:
         proc.kill()
         raise
-    return proc.returncode, err
+    reader.join()
+    return proc.returncode, "".join(chunks)
 
 
 @pytest.mark.slow  # a subprocess each, about 3 s
@@ -319,8 +331,11 @@ def _interrupt(argv, tmp_path, sig, after: float):
 ], ids=["figures", "animate", "atlas"])
 def test_a_signal_leaves_nothing(tmp_path, argv, sig, rc, word):
     """Ctrl-C or SIGTERM while the pictures are made: one line, the right status, no file,
-    no temporary."""
-    code, err = _interrupt(argv, tmp_path, sig, after=2.5)
+    no temporary. The atlas is stopped while its animation helper process runs (step 6)."""
+    if argv[0] == "atlas":
+        code, err = _interrupt(argv, tmp_path, sig, after=0.2, marker="[6/7]")
+    else:
+        code, err = _interrupt(argv, tmp_path, sig, after=2.5)
     assert code == rc, err
     assert err.strip().splitlines()[-1] == f"rollingdisk: {word}", err
     assert "Traceback" not in err

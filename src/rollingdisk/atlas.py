@@ -308,11 +308,23 @@ def _start_animation(traj, path, kw):
     there); returns the process."""
     import multiprocessing
 
-    from .animation import animate
-
-    proc = multiprocessing.Process(target=animate, args=(traj, path), kwargs=kw, daemon=True)
+    proc = multiprocessing.Process(target=_animate_in_child, args=(traj, path, kw),
+                                   daemon=True)
     proc.start()
     return proc
+
+
+def _animate_in_child(traj, path, kw):
+    """The helper's body. A Ctrl-C or SIGTERM reaches the whole process group: the child
+    ignores SIGINT (the parent stops it) and dies quietly on SIGTERM, so the user sees the
+    parent's one line and never the child's traceback."""
+    import signal
+
+    from .animation import animate
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    animate(traj, path, **kw)
 
 
 def _floats(d):
