@@ -6,7 +6,8 @@ import sys
 from pathlib import Path
 
 CORE = ["rollingdisk", "rollingdisk.disk", "rollingdisk.equations", "rollingdisk.steady",
-        "rollingdisk._stability", "rollingdisk._simulate", "rollingdisk.regions"]
+        "rollingdisk._stability", "rollingdisk._simulate", "rollingdisk.regions",
+        "rollingdisk.exact"]
 SRC = str(Path(__file__).resolve().parents[1] / "src")
 
 
