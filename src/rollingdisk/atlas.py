@@ -37,7 +37,7 @@ __all__ = ["AtlasResult", "ATLAS_FILES", "build_atlas", "steady_trajectory"]
 #: The files of an atlas folder (the folder is written as a whole, see :func:`build_atlas`).
 ATLAS_FILES = ("thresholds.json", "existence.png", "stability.png", "varpi2.png",
                "all_omega30.png", "motion_stable.png", "motion_stable.gif",
-               "motion_unstable.png", "motion_unstable.gif", "index.html")
+               "motion_unstable.png", "motion_unstable.gif", "exact.png", "index.html")
 
 
 @dataclass(frozen=True)
@@ -176,7 +176,7 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
     h = check_h(h)
     target = check_replaceable(out_dir, ATLAS_FILES, name="out_dir")
     chosen = example_motions(h)  # before any work: fails for a disk with no unstable circle
-    pr = _Progress(7, stream=stream, enabled=bool(progress))
+    pr = _Progress(8, stream=stream, enabled=bool(progress))
     try:
         with atomic_dir(target) as out:
             files, motions = _write_atlas(h, out, chosen, quick=bool(quick), pr=pr)
@@ -284,6 +284,10 @@ def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[l
             files.append(gif)
             motions[kind] = _motion_record(motion, stab, traj, kick)
             pr.done(f"status {motions[kind]['status']}")
+        # 8. the stable circle's exact motion at finite amplitude (while the helper draws)
+        pr.step("exact motion: quadrature, rosette, backbone")
+        motions["exact"] = _exact_section(chosen.stable, out, dpi, files)
+        pr.done(f"period {motions['exact']['period']:.6g}")
         for proc in helpers:
             proc.join()
             if proc.exitcode != 0:
@@ -295,12 +299,37 @@ def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[l
                 proc.terminate()
                 proc.join()
 
-    # 8. index page ------------------------------------------------------------------------
+    # 9. index page ------------------------------------------------------------------------
     pr.step("index.html")
     (out / "index.html").write_text(_index_html(h, thr, motions, [p.name for p in files]),
                                     encoding="utf-8")
     pr.done()
     return files, motions
+
+
+def _exact_section(motion, out: Path, dpi: int, files: list) -> dict:
+    """The exact motion about the stable circle, kicked hard (a finite amplitude), with its
+    backbone curve (:mod:`rollingdisk.exact`)."""
+    from matplotlib.figure import Figure
+
+    from . import exact, plotting
+    from ._stability import stability
+
+    varpi = stability(motion).varpi
+    kicks = np.linspace(0.01, 1.0, 25) * varpi * 0.3
+    bb = exact.backbone(motion, kicks)
+    ok = np.nonzero(np.isfinite(bb.period))[0]
+    kick = float(kicks[ok[len(ok) // 2]])
+    ex = exact.exact_steady(motion, kick=kick)
+    fig = Figure(figsize=(12.6, 4.0))
+    plotting.plot_exact(ex, fig, backbone=bb, n_periods=20,
+                        title=f"exact motion about the stable circle, kick {kick:.3g}")
+    _save(fig, out / "exact.png", dpi, files)
+    return {"kick": kick, "theta_min": ex.theta_min, "theta_max": ex.theta_max,
+            "period": ex.period, "linear_period": 2.0 * math.pi / varpi,
+            "delta_psi": ex.delta_psi, "status": ex.status,
+            "largest_amplitude": float(np.nanmax(bb.amplitude)),
+            "frequency_at_largest": float(bb.frequency[ok[-1]]), "varpi": varpi}
 
 
 def _start_animation(traj, path, kw):
@@ -468,6 +497,20 @@ the paths of C and of the contact point P, &theta;(t), the energy error and the 
 plane is the path of P.</p>
 {motion_block("stable")}
 {motion_block("unstable")}
+
+<h2>The stable circle at finite amplitude: the exact motion</h2>
+<p>On rough and smooth ground the disk is integrable: &omega;<sub>2</sub>,
+&omega;<sub>3</sub> and (d&theta;/dt)&sup2; are functions of &theta; alone, and time,
+&psi; and the contact point's path follow by quadrature (<code>rollingdisk exact</code>,
+<code>docs/exact.md</code>). Kicked by d&theta;/dt(0) = {_fmt(motions['exact']['kick'], 3)},
+the stable circle nutates between &theta; = {_fmt(motions['exact']['theta_min'], 6)} and
+{_fmt(motions['exact']['theta_max'], 6)} with period {_fmt(motions['exact']['period'], 8)}
+(linear theory: 2&pi;/&varpi; = {_fmt(motions['exact']['linear_period'], 8)}), the frame
+turning by &Delta;&psi; = {_fmt(motions['exact']['delta_psi'], 6)} per period. Left: &theta;(t)
+over one period; middle: the contact point over 20 periods; right: the backbone, frequency
+against amplitude, which starts at &varpi; and reaches {_fmt(motions['exact']['frequency_at_largest'], 5)}
+at amplitude {_fmt(motions['exact']['largest_amplitude'], 3)}.</p>
+<img src="exact.png" alt="exact motion: theta over a period, rosette, backbone">
 
 <h2>Files</h2>
 <p class="note">{" &middot; ".join(f'<a href="{e(n)}">{e(n)}</a>' for n in names)}</p>

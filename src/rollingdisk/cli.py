@@ -531,6 +531,110 @@ def _run_simulate(args) -> int:
     return 0
 
 
+# ---------------------------------------------------------------------------- exact
+def _add_exact(sub) -> None:
+    """``rollingdisk exact``: the exact motion by quadrature (issue 11)."""
+    p = sub.add_parser(
+        "exact", help="the exact motion by quadrature: turning points, period, delta psi",
+        description="The exact (integrable) motion on rough or smooth ground by quadrature: "
+        "status (bounded, steady, lift-off, edge-contact, fell-flat), theta_min, theta_max, "
+        "the nutation period and the precession delta_psi per period. Start from a steady "
+        "motion (--theta0 with one of --Omega0, --rC, --rP, or --motion straight --omega0 "
+        "W) with --kick / --perturb, or from any state (--state theta=0.3,omega3=2).")
+    g = _add_motion_args(p)
+    g.add_argument("--state", type=str, metavar="NAME=VALUE,...",
+                   help="an arbitrary initial state by component names, as for simulate")
+    p.add_argument("--perturb", type=_real("perturb"), default=0.0,
+                   help="added to theta(0) (default 0)")
+    p.add_argument("--kick", type=_real("kick"), default=0.0,
+                   help="added to omega1(0) = d theta/dt (default 0)")
+    p.add_argument("--periods", type=_integer("periods", 1, 1000), default=20,
+                   help="periods of the rosette in --out (default 20)")
+    p.add_argument("--out", type=str, default=None, metavar="FILE.png",
+                   help="a figure: theta(t) over a period, the contact point's rosette, and "
+                   "the backbone curve (frequency against amplitude) about the steady motion")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(handler=_run_exact)
+
+
+def _run_exact(args) -> int:
+    import json
+
+    from . import exact
+    from ._stability import stability
+    from .disk import Disk
+
+    disk = Disk(h=args.h)
+    if args.state is None:
+        motion = _motion_from_args(args, "exact")
+    elif args.theta0 is not None or args.motion is not None:
+        raise CLIError("rollingdisk exact: --state gives the whole initial state; "
+                       "leave out --theta0 and --motion")
+    else:
+        motion = None
+    if args.out is not None:
+        from ._files import check_writable
+        from .plotting import image_format
+
+        image_format(args.out, "--out")
+        check_writable(args.out, name="--out")
+    if motion is not None:
+        ex = exact.exact_steady(motion, perturb=args.perturb, kick=args.kick)
+    else:
+        from .equations import state_index
+
+        y0 = _parse_state(args.state, args.ground)
+        y0[state_index(args.ground, "theta")] += args.perturb
+        y0[state_index(args.ground, "omega1")] += args.kick
+        ex = exact.exact_motion(disk, args.ground, y0)
+    record = ex.as_dict()
+    stab = None if motion is None else stability(motion)
+    record["varpi"] = None if stab is None or not stab.stable else stab.varpi
+    record["varpi2"] = None if stab is None else stab.varpi2
+    record = {k: v if k == "drift" or not isinstance(v, float) else _finite_or_none(v)
+              for k, v in record.items()}
+    if args.out is not None:
+        _exact_figure(ex, motion, args)
+        record["out"] = args.out
+    if args.json:
+        print(json.dumps(record, indent=2, allow_nan=False))
+        return 0
+    print(f"status       {ex.status}")
+    for key in ("theta_min", "theta_max", "amplitude", "period", "frequency", "varpi",
+                "delta_psi", "delta_phi", "t_end", "theta_end", "E"):
+        if record.get(key) is not None:
+            print(f"{key:<12} {record[key]:>18.12g}")
+    if record["drift"] is not None:
+        print(f"{'drift':<12} {record['drift'][0]:>18.12g} {record['drift'][1]:.12g}"
+              "   contact point's displacement over the first period (X, Y)")
+    if args.out is not None:
+        print(f"wrote {args.out}")
+    return 0
+
+
+def _exact_figure(ex, motion, args) -> None:
+    import numpy as np
+    from matplotlib.figure import Figure
+
+    from ._stability import stability
+
+    from . import exact
+    from .plotting import plot_exact, save_figure
+
+    if ex.status != "bounded":
+        raise ParameterError(f"--out: the motion is {ex.status}; the figure (theta over a "
+                             "period, rosette) needs a bounded motion")
+    bb = None
+    if motion is not None and stability(motion).varpi2 > 0:
+        top = max(abs(args.kick), 1e-3) * 1.5
+        kicks = np.linspace(top / 40, top, 24)
+        bb = exact.backbone(motion, kicks)
+    fig = Figure(figsize=(12.6 if bb is not None else 8.4, 4.0))
+    plot_exact(ex, fig, backbone=bb, n_periods=args.periods,
+               title=f"exact motion, {ex.ground} ground, h = {ex.disk.h:.4g}")
+    save_figure(fig, args.out, dpi=110)
+
+
 # ---------------------------------------------------------------------------- figures, maps
 def _add_figures(sub) -> None:
     """``figures``, ``map``, ``animate``, ``atlas``: the pictures (edges over the core)."""
@@ -827,8 +931,8 @@ def build_parser() -> argparse.ArgumentParser:
     """
     parser = _Parser(prog="rollingdisk", description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
-    for add in (_add_derive, _add_steady, _add_thresholds, _add_simulate, _add_figures,
-                _add_sweep):
+    for add in (_add_derive, _add_steady, _add_thresholds, _add_simulate, _add_exact,
+                _add_figures, _add_sweep):
         add(sub)
     return parser
 

@@ -671,7 +671,7 @@ def exact_motion(disk: Disk, ground: str, y0) -> ExactMotion:
 
     if legs is not None:
         t_end = float(sum(_leg_time(fit, p, r) for p, r in legs))
-        visited = [theta0] + [p for leg in legs for p in leg]
+        visited = [0.0 if abs(p) == _TINY else p for leg in legs for p in leg]
         if status == "edge-contact":
             theta_end = 0.0
         elif status == "fell-flat":

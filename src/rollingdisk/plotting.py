@@ -689,3 +689,77 @@ def plot_basin_map(ds, ax=None) -> dict:
     ax.set_ylabel(r"$\theta_0$ [deg]")
     ax.set_title(f"{ds.attrs.get('ground', '')}: basin size", fontsize="small")
     return {"ax": ax, "mesh": mesh, "colorbar": cb, "boundary": boundary}
+
+
+# ---------------------------------------------------------------------------- exact motions
+def plot_exact_theta(ex, ax=None, *, title: str | None = None) -> dict:
+    """``theta(t)`` of an exact motion (:mod:`rollingdisk.exact`) over one period, with
+    its turning points."""
+    ax = _axes(ax)
+    if ex.period is None:
+        raise ParameterError(f"ex: the motion ends ({ex.status}); theta(t) over a period "
+                             "needs a bounded motion")
+    t = np.linspace(0.0, ex.period, 400)
+    (line,) = ax.plot(t, ex.theta(t), color="k", lw=1.2, label=r"$\theta(t)$ (quadrature)")
+    for v, name in ((ex.theta_min, r"$\theta_{min}$"), (ex.theta_max, r"$\theta_{max}$")):
+        ax.axhline(v, color="tab:blue", ls=":", lw=0.8)
+        ax.annotate(name, (t[-1], v), fontsize="x-small", ha="right", va="bottom")
+    ax.set_xlabel(r"$t\ [\sqrt{a/g}]$")
+    ax.set_ylabel(r"$\theta$ [rad]")
+    ax.set_title(title if title is not None else f"one period, T = {ex.period:.6g}")
+    return {"ax": ax, "theta": line}
+
+
+def plot_rosette(ex, ax=None, *, n_periods: int = 20, title: str | None = None) -> dict:
+    """The contact point's path (eq. 5) over ``n_periods`` nutation periods: a rosette."""
+    ax = _axes(ax)
+    if ex.period is None:
+        raise ParameterError(f"ex: the motion ends ({ex.status}); the rosette needs a "
+                             "bounded motion")
+    t = np.linspace(0.0, n_periods * ex.period, 200 * n_periods + 1)
+    X, Y = ex.contact_path(t)
+    (line,) = ax.plot(X, Y, color="tab:red", lw=0.7)
+    ax.plot(X[:1], Y[:1], "o", color="tab:red", ms=3)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(r"$X_P$")
+    ax.set_ylabel(r"$Y_P$")
+    ax.set_title(title if title is not None else
+                 rf"contact point, {n_periods} periods, $\Delta\psi$ = {ex.delta_psi:.4g}")
+    return {"ax": ax, "path": line}
+
+
+def plot_backbone(bb, ax=None, *, title: str | None = None) -> dict:
+    """Backbone curve (:func:`rollingdisk.exact.backbone`): nutation frequency against
+    amplitude, tending to the linear ``varpi`` (eq. 39) at zero amplitude."""
+    ax = _axes(ax)
+    ok = np.isfinite(bb.frequency)
+    (line,) = ax.plot(bb.amplitude[ok], bb.frequency[ok], "o-", color="k", ms=3, lw=1.0,
+                      label="exact frequency")
+    out = {"ax": ax, "frequency": line}
+    if np.isfinite(bb.varpi):
+        out["varpi"] = ax.axhline(bb.varpi, color="tab:blue", ls="--", lw=0.8,
+                                  label=r"$\varpi$ (eq. 39)")
+    ax.set_xlabel(r"amplitude $(\theta_{max}-\theta_{min})/2$ [rad]")
+    ax.set_ylabel(r"$2\pi/T$")
+    ax.legend(loc="best", fontsize="x-small")
+    ax.set_title(title if title is not None else "backbone")
+    return {**out}
+
+
+def plot_exact(ex, fig=None, *, backbone=None, n_periods: int = 20,
+               title: str | None = None) -> dict:
+    """One figure of an exact motion: ``theta(t)`` over a period, the rosette, and the
+    backbone curve when ``backbone`` (a :class:`rollingdisk.exact.Backbone`) is given."""
+    plt = _pyplot()
+    n = 3 if backbone is not None else 2
+    if fig is None:
+        fig = plt.figure(figsize=(4.2 * n, 4.0))
+    axs = fig.subplots(1, n)
+    out = {"fig": fig, "axes": axs, "theta": plot_exact_theta(ex, axs[0]),
+           "rosette": plot_rosette(ex, axs[1], n_periods=n_periods)}
+    if backbone is not None:
+        out["backbone"] = plot_backbone(backbone, axs[2])
+    if title:
+        fig.suptitle(title)
+    fig.tight_layout()
+    return out
