@@ -157,14 +157,20 @@ def _run_derive(args) -> int:
 _H = _real("h", low=0.0, high=H_MAX)  # the half-thickness, as Disk checks it
 
 
-def _add_motion_args(p, *, h_default: float | None = None):
+def _add_motion_args(p, *, h_default: float | None = None, coulomb: bool = False):
     """The arguments that name a steady motion (shared by steady, simulate, animate).
 
     Returns the mutually exclusive group of the free parameter, for commands that add an
-    alternative to it (``simulate --state``).
+    alternative to it (``simulate --state``).  ``coulomb``: ``--ground coulomb`` is allowed
+    (the steady motion is then the rough-ground one, started rolling).
     """
-    p.add_argument("--ground", choices=("rough", "smooth"), default="rough",
-                   help="rough (no slip, default) or smooth (no friction)")
+    if coulomb:
+        p.add_argument("--ground", choices=("rough", "smooth", "coulomb"), default="rough",
+                       help="rough (no slip, default), smooth (no friction) or coulomb "
+                       "(friction --mu: rolling while it holds, sliding when it cannot)")
+    else:
+        p.add_argument("--ground", choices=("rough", "smooth"), default="rough",
+                       help="rough (no slip, default) or smooth (no friction)")
     if h_default is None:
         p.add_argument("--h", type=_H, required=True, help="half-thickness / radius, h >= 0")
     else:
@@ -191,11 +197,12 @@ def _motion_from_args(args, command: str):
     from .steady import steady_motion, straight_line
 
     disk = Disk(h=args.h)
+    ground = "rough" if args.ground == "coulomb" else args.ground
     straight = args.motion == "straight" or (args.motion is None and args.omega0 is not None)
     if straight:
         if args.omega0 is None:
             raise CLIError(f"rollingdisk {command}: error: --motion straight needs --omega0")
-        return straight_line(disk, args.ground, args.omega0, theta0=args.theta0)
+        return straight_line(disk, ground, args.omega0, theta0=args.theta0)
     if args.omega0 is not None:
         raise CLIError(f"rollingdisk {command}: error: --omega0 is for --motion straight; "
                        "circles take --Omega0, --rC or --rP")
@@ -205,7 +212,7 @@ def _motion_from_args(args, command: str):
     if args.Omega0 is None and args.rC is None and args.rP is None:
         raise CLIError(f"rollingdisk {command}: error: give one of --Omega0, --rC, --rP "
                        "(or --motion straight --omega0 W)")
-    return steady_motion(disk, args.ground, args.theta0, Omega0=args.Omega0, r_C=args.rC,
+    return steady_motion(disk, ground, args.theta0, Omega0=args.Omega0, r_C=args.rC,
                          r_P=args.rP)
 
 
@@ -297,12 +304,27 @@ def _add_simulate(sub) -> None:
         "Start from a steady motion (--theta0 with one of --Omega0, --rC, --rP, or "
         "--motion straight --omega0 W), optionally perturbed (--perturb adds to theta), "
         "or from any state (--state theta=0.3,omega2=1.5,omega3=0.7; unnamed components "
-        "are 0). Write negative angles as --theta0=-30deg.")
-    g = _add_motion_args(p)
+        "are 0). Write negative angles as --theta0=-30deg. On --ground coulomb (friction "
+        "--mu) the disk rolls while friction holds and slides when it cannot; a steady "
+        "motion is the rough-ground one, started rolling.")
+    g = _add_motion_args(p, coulomb=True)
     g.add_argument("--state", type=str, metavar="NAME=VALUE,...",
                    help="an arbitrary initial state by component names (X_C, Y_C, [V_X, "
                    "V_Y,] psi, theta, phi, omega1, omega2, omega3; angles may have a deg "
-                   "suffix); unnamed components are 0")
+                   "suffix); unnamed components are 0, except on coulomb ground without "
+                   "V_X, V_Y: then the velocity of C is the rolling one (eq. 37)")
+    c = p.add_argument_group("coulomb ground (issue 10, docs/friction.md)")
+    c.add_argument("--mu", type=_real("mu_s", low=0.0), default=None,
+                   help="static friction coefficient mu_s >= 0 (needed for --ground coulomb)")
+    c.add_argument("--mu-k", dest="mu_k", type=_real("mu_k", low=0.0), default=None,
+                   help="kinetic coefficient, 0 <= mu_k <= mu_s (default mu_s)")
+    c.add_argument("--rolling-resistance", dest="rolling_resistance",
+                   type=_real("rolling_resistance", low=0.0), default=None,
+                   help="rolling-resistance length c: |M_h| = c F_z")
+    c.add_argument("--pivot", type=_real("pivot", low=0.0), default=None,
+                   help="pivoting (drilling) friction length c: |M_z| = c F_z")
+    c.add_argument("--air", type=_real("air", low=0.0), default=None,
+                   help="air-film drag coefficient (Moffatt's model)")
     p.add_argument("--perturb", type=float, default=0.0, help="added to theta(0) (default 0)")
     p.add_argument("--kick", type=float, default=0.0,
                    help="added to omega1(0) = d theta/dt (default 0)")
@@ -322,7 +344,8 @@ def _add_simulate(sub) -> None:
                    "(default 2000000, about 20 s)")
     p.add_argument("--out", type=str, default=None, metavar="FILE.csv",
                    help="write the trajectory as CSV (t, X_C, Y_C, psi, theta, phi, omega1, "
-                   "omega2, omega3, X_P, Y_P, F_x, F_y, F_z, E)")
+                   "omega2, omega3, X_P, Y_P, F_x, F_y, F_z, E; smooth and coulomb ground "
+                   "add V_X, V_Y; coulomb ground adds mode: 0 rolling, 1 sliding)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_run_simulate)
 
@@ -457,12 +480,15 @@ def _run_simulate(args) -> int:
     from .measure import compare_with_theory, oscillation_frequency
 
     disk = Disk(h=args.h)
+    coulomb = _coulomb_ground(args)
     motion = _simulate_motion(args)
     if args.out is not None:
         _check_out_file(args.out, "simulate")
         check_writable(args.out, name="--out")
     if not (math.isfinite(args.t_end) and args.t_end > 0):
         raise ParameterError(f"t_end must be a finite number > 0, got {args.t_end!r}")
+    if coulomb is not None:
+        return _run_simulate_coulomb(args, disk, coulomb, motion)
     options = dict(rtol=DEFAULT_RTOL if args.rtol is None else args.rtol,
                    atol=DEFAULT_ATOL if args.atol is None else args.atol, method=args.method,
                    max_steps=args.max_steps, error_control=args.error_control)
@@ -528,6 +554,108 @@ def _run_simulate(args) -> int:
                   f"  {key:16s} {val}")
         if args.out is not None:
             print(f"  wrote {args.out}")
+    return 0
+
+
+def _coulomb_ground(args):
+    """The :class:`~rollingdisk.ground.Coulomb` ground the options ask for, or None."""
+    extra = [f"--{n.replace('_', '-')}" for n in ("mu", "mu_k", "rolling_resistance", "pivot",
+                                                 "air") if getattr(args, n) is not None]
+    if args.ground != "coulomb":
+        if extra:
+            raise CLIError(f"rollingdisk simulate: {', '.join(extra)} need --ground coulomb")
+        return None
+    if args.mu is None:
+        raise CLIError("rollingdisk simulate: --ground coulomb needs --mu (static friction "
+                       "coefficient, e.g. --mu 0.3)")
+    if args.method != "dop853" or args.error_control != "full":
+        raise CLIError("rollingdisk simulate: --method and --error-control are for rough and "
+                       "smooth ground; coulomb ground has its own hybrid integrator")
+    from .ground import Coulomb
+
+    return Coulomb(args.mu, args.mu_k, rolling_resistance=args.rolling_resistance,
+                   pivot=args.pivot, air=args.air)
+
+
+def _coulomb_initial_state(args, disk, motion):
+    from .equations import rolling_state, state_index
+
+    if motion is not None:
+        y = list(rolling_state(disk, motion.initial_state()))
+    else:
+        y = _parse_state(args.state, "smooth")
+        named = {item.partition("=")[0].strip() for item in args.state.split(",")}
+        if not {"V_X", "V_Y"} & named:  # the rolling velocity of C (eq. 37)
+            rough = [y[0], y[1], y[4], y[5], y[6], y[7], y[8], y[9]]
+            y = list(rolling_state(disk, rough))
+    y[state_index("smooth", "theta")] += args.perturb
+    y[state_index("smooth", "omega1")] += args.kick
+    return y
+
+
+def _run_simulate_coulomb(args, disk, ground, motion) -> int:
+    """``simulate --ground coulomb``: the hybrid rolling/sliding run (issue 10)."""
+    import json
+
+    from ._files import atomic_file
+    from ._hybrid import energy_balance, simulate_coulomb
+
+    y0 = _coulomb_initial_state(args, disk, motion)
+    options = dict(max_steps=args.max_steps)
+    if args.rtol is not None:
+        options["rtol"] = args.rtol
+    if args.atol is not None:
+        options["atol"] = args.atol
+    bar = None if args.json else _ProgressBar(sys.stderr)
+    try:
+        traj = simulate_coulomb(disk, ground, (0.0, args.t_end), y0, progress=bar, **options)
+    finally:
+        if bar is not None:
+            bar.close()
+    from .equations import MODE_NAMES
+
+    record = {
+        "status": traj.status,
+        "message": traj.message,
+        "ground": "coulomb",
+        **{k: v for k, v in ground.as_dict().items() if k != "ground"},
+        "h": disk.h,
+        "t_end": float(traj.t[-1]),
+        "n_steps": traj.n_steps,
+        "mode_end": MODE_NAMES[int(traj.mode[-1])],
+        "transitions": [x.as_dict() for x in traj.transitions],
+        "energy_balance": energy_balance(traj),
+        "dissipated": {k: float(v[-1]) for k, v in traj.dissipated.items()},
+        "theta_min": float(min(traj.theta)),
+        "theta_max": float(max(traj.theta)),
+        "wall_time_s": traj.wall_time,
+        "method": traj.method,
+    }
+    record = {k: _finite_or_none(v) for k, v in record.items()}
+    if args.out is not None:  # written last: a failure above leaves no file
+        import numpy as np
+
+        cols = traj.as_columns()
+        with atomic_file(args.out, "w", newline="") as csv:
+            np.savetxt(csv, np.column_stack(list(cols.values())), delimiter=",",
+                       header=",".join(cols), comments="", fmt="%.17g")
+        record["out"] = args.out
+    if args.json:
+        print(json.dumps(record, indent=2, allow_nan=False))
+        return 0
+    print(traj.message)
+    for key in ("t_end", "n_steps", "mode_end", "energy_balance", "theta_min", "theta_max",
+                "wall_time_s"):
+        val = record[key]
+        if val is not None:
+            print(f"  {key:16s} {val:.10g}" if isinstance(val, float) else
+                  f"  {key:16s} {val}")
+    for x in record["transitions"][:20]:
+        print(f"  t = {x['t']:.10g}: {x['from']} -> {x['to']}")
+    if len(record["transitions"]) > 20:
+        print(f"  ... {len(record['transitions']) - 20} more transitions")
+    if args.out is not None:
+        print(f"  wrote {args.out}")
     return 0
 
 
