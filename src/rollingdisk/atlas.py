@@ -438,6 +438,7 @@ error {_fmt(m['energy_error'], 2)} mga.</p>
 <div class="pair"><img src="motion_{kind}.png" alt="{kind} motion plots" width="620">
 <img src="motion_{kind}.gif" alt="{kind} motion animation" width="350"></div>"""
 
+    ex = motions["exact"]
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
 <title>rollingdisk atlas, h = {h:.4g}</title><style>{_CSS}</style></head><body>
@@ -502,14 +503,15 @@ plane is the path of P.</p>
 <p>On rough and smooth ground the disk is integrable: &omega;<sub>2</sub>,
 &omega;<sub>3</sub> and (d&theta;/dt)&sup2; are functions of &theta; alone, and time,
 &psi; and the contact point's path follow by quadrature (<code>rollingdisk exact</code>,
-<code>docs/exact.md</code>). Kicked by d&theta;/dt(0) = {_fmt(motions['exact']['kick'], 3)},
-the stable circle nutates between &theta; = {_fmt(motions['exact']['theta_min'], 6)} and
-{_fmt(motions['exact']['theta_max'], 6)} with period {_fmt(motions['exact']['period'], 8)}
-(linear theory: 2&pi;/&varpi; = {_fmt(motions['exact']['linear_period'], 8)}), the frame
-turning by &Delta;&psi; = {_fmt(motions['exact']['delta_psi'], 6)} per period. Left: &theta;(t)
+<code>docs/exact.md</code>). Kicked by d&theta;/dt(0) = {_fmt(ex['kick'], 3)},
+the stable circle nutates between &theta; = {_fmt(ex['theta_min'], 6)} and
+{_fmt(ex['theta_max'], 6)} with period {_fmt(ex['period'], 8)}
+(linear theory: 2&pi;/&varpi; = {_fmt(ex['linear_period'], 8)}), the frame
+turning by &Delta;&psi; = {_fmt(ex['delta_psi'], 6)} per period. Left: &theta;(t)
 over one period; middle: the contact point over 20 periods; right: the backbone, frequency
-against amplitude, which starts at &varpi; and reaches {_fmt(motions['exact']['frequency_at_largest'], 5)}
-at amplitude {_fmt(motions['exact']['largest_amplitude'], 3)}.</p>
+against amplitude, which starts at &varpi; and reaches
+{_fmt(ex['frequency_at_largest'], 5)} at amplitude
+{_fmt(ex['largest_amplitude'], 3)}.</p>
 <img src="exact.png" alt="exact motion: theta over a period, rosette, backbone">
 
 <h2>Files</h2>

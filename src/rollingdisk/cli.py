@@ -744,9 +744,8 @@ def _exact_figure(ex, motion, args) -> None:
     import numpy as np
     from matplotlib.figure import Figure
 
-    from ._stability import stability
-
     from . import exact
+    from ._stability import stability
     from .plotting import plot_exact, save_figure
 
     if ex.status != "bounded":
