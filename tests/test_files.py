@@ -4,6 +4,8 @@ import json
 import multiprocessing
 import os
 
+import pytest
+
 from rollingdisk._files import atomic_dir
 
 
@@ -29,3 +31,23 @@ def test_concurrent_atomic_dirs_leave_one_whole_folder(tmp_path):
     assert sorted(os.listdir(tmp_path)) == ["out"]
     out = tmp_path / "out"
     assert (out / "a.json").read_text() == (out / "b.json").read_text()
+
+
+def test_a_swallowed_signal_still_stops_the_commit(tmp_path):
+    """A KeyboardInterrupt raised where Python only prints it (a weakref callback, a
+    __del__) must not end in a written result: the signal is remembered and raised again
+    before the rename (CI caught an atlas that finished after Ctrl-C this way)."""
+    import signal as sig
+
+    from rollingdisk._files import _PENDING, atomic_dir, atomic_file, terminate_as_exception
+
+    with terminate_as_exception():
+        _PENDING.append(sig.SIGINT)  # as the handler does when its exception is swallowed
+        with pytest.raises(KeyboardInterrupt):
+            with atomic_file(tmp_path / "a.txt") as fh:
+                fh.write("x")
+        with pytest.raises(KeyboardInterrupt):
+            with atomic_dir(tmp_path / "d") as d:
+                (d / "x").write_text("x")
+        _PENDING.clear()
+    assert list(tmp_path.iterdir()) == []

@@ -18,6 +18,7 @@ import errno
 import os
 import shutil
 import signal
+import sys
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
@@ -25,29 +26,59 @@ from pathlib import Path
 from .errors import ParameterError
 
 __all__ = ["Terminated", "atomic_file", "atomic_dir", "check_writable",
-           "check_replaceable", "terminate_as_exception"]
+           "check_replaceable", "terminate_as_exception", "check_signals"]
+
+#: Signals received while :func:`terminate_as_exception` is active (see check_signals).
+_PENDING: list[int] = []
 
 
 class Terminated(BaseException):  # noqa: N818 - named like KeyboardInterrupt
     """Raised in the main thread on SIGTERM while :func:`terminate_as_exception` is active."""
 
 
+def _raise_for(signum: int):
+    if signum == signal.SIGINT:
+        raise KeyboardInterrupt
+    raise Terminated(f"terminated by signal {signum}")
+
+
 @contextlib.contextmanager
 def terminate_as_exception() -> Iterator[None]:
-    """Turn SIGTERM into a :class:`Terminated` exception (main thread only), so that the
-    clean-up of :func:`atomic_file` and :func:`atomic_dir` runs as it does on Ctrl-C."""
+    """Turn SIGTERM into a :class:`Terminated` exception and SIGINT into KeyboardInterrupt
+    (main thread only), so that the clean-up of :func:`atomic_file` and :func:`atomic_dir`
+    runs; each signal is also remembered, so that :func:`check_signals` can raise it again
+    if Python swallowed the exception (one raised inside a weakref callback or ``__del__``
+    is only printed)."""
     def handler(signum, frame):
-        raise Terminated(f"terminated by signal {signum}")
+        _PENDING.append(signum)
+        _raise_for(signum)
 
+    def unraisable(info):  # the swallowed signal is raised again by check_signals
+        if not issubclass(info.exc_type, (KeyboardInterrupt, Terminated)):
+            old_hook(info)
+
+    _PENDING.clear()
     try:
         old = signal.signal(signal.SIGTERM, handler)
-    except ValueError:  # not the main thread: leave the signal alone
+        old_int = signal.signal(signal.SIGINT, handler)
+    except ValueError:  # not the main thread: leave the signals alone
         yield
         return
+    old_hook, sys.unraisablehook = sys.unraisablehook, unraisable
     try:
         yield
     finally:
         signal.signal(signal.SIGTERM, old)
+        signal.signal(signal.SIGINT, old_int)
+        sys.unraisablehook = old_hook
+
+
+def check_signals() -> None:
+    """Raise again a signal received under :func:`terminate_as_exception` whose exception
+    was swallowed; called before an output is committed, so that a Ctrl-C or SIGTERM
+    never ends in a written result."""
+    if _PENDING:
+        _raise_for(_PENDING[-1])
 
 
 def _umask() -> int:
@@ -164,6 +195,7 @@ def atomic_file(path, mode: str = "w", **open_kw) -> Iterator:
         else:
             with os.fdopen(fd, mode, **open_kw) as fh:
                 yield fh
+        check_signals()
         os.replace(tmp, target)
     except BaseException:
         with contextlib.suppress(OSError):
@@ -216,6 +248,7 @@ def atomic_dir(path) -> Iterator[Path]:
     try:
         os.chmod(tmp, 0o777 & ~_umask())
         yield tmp
+        check_signals()
         _swap_in(tmp, target)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)

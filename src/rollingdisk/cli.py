@@ -26,7 +26,7 @@ import os
 import sys
 from collections.abc import Sequence
 
-from ._files import Terminated, check_writable, terminate_as_exception
+from ._files import Terminated, check_signals, check_writable, terminate_as_exception
 from .disk import DEFAULT_H, H_MAX, check_int, check_real
 from .errors import INPUT_ERRORS, ParameterError
 
@@ -1136,7 +1136,9 @@ def main(argv: Sequence[str] | None = None) -> int:
             if not getattr(args, "handler", None):
                 parser.print_help(sys.stderr)
                 return 2
-            return int(args.handler(args) or 0)
+            status = int(args.handler(args) or 0)
+            check_signals()  # a Ctrl-C whose exception Python swallowed still counts
+            return status
     except KeyboardInterrupt:
         _say("rollingdisk: interrupted")
         return 130
