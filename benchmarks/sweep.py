@@ -9,7 +9,8 @@ multi-core speed-up; Dask (LocalCluster, one single-threaded worker process per 
 against the plain multi-core run; heyoka's batch (SIMD) mode on the same job where heyoka is
 installed.  Timings on a shared machine are noisy: run it alone for figures to quote.
 
-Run: PYTHONPATH=src python benchmarks/sweep.py [N]
+Run: PYTHONPATH=src python benchmarks/sweep.py [N]   (N = 16384 by default: with few
+trajectories Dask's fixed cost per run dominates)
 """
 
 import math
@@ -72,6 +73,10 @@ def heyoka_batch(g, k):
         def sign(x):
             return 1.0
 
+        @staticmethod
+        def real(x):
+            return x
+
     ns = dict(eq.__dict__, np=_np)
     for name in ("_geometry", "_rough_omega_dot"):
         f = eq.__dict__[name]
@@ -99,7 +104,7 @@ def heyoka_batch(g, k):
 
 
 def main():
-    n = int(sys.argv[1]) if len(sys.argv) > 1 else 4096
+    n = int(sys.argv[1]) if len(sys.argv) > 1 else 16384
     g = grid(n)
     pert = Perturbation(kick=KICK)
     ncores = os.cpu_count() or 1
