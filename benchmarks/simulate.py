@@ -153,6 +153,7 @@ def heyoka_system(disk):
         sin = staticmethod(hy.sin)
         cos = staticmethod(hy.cos)
         sign = staticmethod(lambda x: 1.0)
+        real = staticmethod(lambda x: x)  # theta > 0 in the benchmark: sgn(theta) = 1
 
     ns = dict(eq.__dict__, np=HeyokaNp())
     for name in ("_geometry", "_rough_omega_dot", "_rough_rhs"):

@@ -138,6 +138,23 @@ def _rhs(rough, h, y, out):
             out[i] = r2[i]
 
 
+def _rhs_col(rough, h, y, K, s):
+    """dy/dt into column ``s`` of the stage array ``K`` (shape (n, stages)): as
+    :func:`_rhs`, without a view of ``K`` per stage."""
+    if y.shape[0] == 4:
+        r4 = _reduced_rhs(rough, h, y)
+        for i in range(4):
+            K[i, s] = r4[i]
+    elif rough:
+        r = _rough_rhs(h, y)
+        for i in range(8):
+            K[i, s] = r[i]
+    else:
+        r2 = _smooth_rhs(h, y)
+        for i in range(10):
+            K[i, s] = r2[i]
+
+
 def _guards(rough, h, y, g):
     """Guard values, each positive while the motion is admissible.
 
@@ -151,26 +168,30 @@ def _guards(rough, h, y, g):
 
 
 def _combine(y, dt, coef, K, m, out):
-    """out = y + dt * sum_{j < m} coef[j] K[j] (a Runge-Kutta stage or the new state)."""
+    """out = y + dt * sum_{j < m} coef[j] K[:, j] (a Runge-Kutta stage or the new state).
+
+    ``K`` holds the stages in its columns, so that the sum over stages runs along
+    contiguous memory."""
     for i in range(y.shape[0]):
         acc = 0.0
         for j in range(m):
-            acc += coef[j] * K[j, i]
+            acc += coef[j] * K[i, j]
         out[i] = y[i] + dt * acc
 
 
 def _step(rough, h, t, y, f, dt, K, ytmp, y_new, f_new):
-    """One DOP853 step of length dt from (t, y) with f = f(t, y); fills y_new, f_new, K."""
+    """One DOP853 step of length dt from (t, y) with f = f(t, y); fills y_new, f_new and the
+    stages K (shape (n, stages), one column per stage)."""
     n = y.shape[0]
     for i in range(n):
-        K[0, i] = f[i]
+        K[i, 0] = f[i]
     for s in range(1, _NS):
         _combine(y, dt, _A[s], K, s, ytmp)
-        _rhs(rough, h, ytmp, K[s])
+        _rhs_col(rough, h, ytmp, K, s)
     _combine(y, dt, _B, K, _NS, y_new)
     _rhs(rough, h, y_new, f_new)
     for i in range(n):
-        K[_NS, i] = f_new[i]
+        K[i, _NS] = f_new[i]
 
 
 def _dense_tail(y, y_new, f_new, dt, K, F):
@@ -178,12 +199,12 @@ def _dense_tail(y, y_new, f_new, dt, K, F):
     for i in range(y.shape[0]):
         dy = y_new[i] - y[i]
         F[0, i] = dy
-        F[1, i] = dt * K[0, i] - dy
-        F[2, i] = 2.0 * dy - dt * (f_new[i] + K[0, i])
+        F[1, i] = dt * K[i, 0] - dy
+        F[2, i] = 2.0 * dy - dt * (f_new[i] + K[i, 0])
         for r in range(_NF - 3):
             acc = 0.0
             for j in range(_NSX):
-                acc += _D[r, j] * K[j, i]
+                acc += _D[r, j] * K[i, j]
             F[3 + r, i] = dt * acc
 
 
@@ -197,7 +218,7 @@ def _dense_coefficients(rough, h, y, y_new, f_new, dt, K, ytmp, F):
     """
     for s in range(_NS + 1, _NSX):
         _combine(y, dt, _AX[s - _NS - 1], K, s, ytmp)
-        _rhs(rough, h, ytmp, K[s])
+        _rhs_col(rough, h, ytmp, K, s)
     _dense_tail(y, y_new, f_new, dt, K, F)
 
 
@@ -222,8 +243,8 @@ def _error_norm(y, y_new, K, dt, rtol, atol):
         a5 = 0.0
         a3 = 0.0
         for j in range(_NS + 1):
-            a5 += _E5[j] * K[j, i]
-            a3 += _E3[j] * K[j, i]
+            a5 += _E5[j] * K[i, j]
+            a3 += _E3[j] * K[i, j]
         sc = atol + rtol * max(abs(y[i]), abs(y_new[i]))
         e5 += (a5 / sc) ** 2
         e3 += (a3 / sc) ** 2
@@ -245,8 +266,8 @@ def _error_norm_v(y, y_new, K, dt, rtol, atolv):
         a5 = 0.0
         a3 = 0.0
         for j in range(_NS + 1):
-            a5 += _E5[j] * K[j, i]
-            a3 += _E3[j] * K[j, i]
+            a5 += _E5[j] * K[i, j]
+            a3 += _E3[j] * K[i, j]
         sc = atolv[i] + rtol * max(abs(y[i]), abs(y_new[i]))
         e5 += (a5 / sc) ** 2
         e3 += (a3 / sc) ** 2
@@ -462,7 +483,7 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atolv, max_step, first_ste
     ``keep_dense``, each step's start, length, start state and interpolant coefficients.
     """
     n = y0.shape[0]
-    K = np.empty((_NSX, n))
+    K = np.empty((n, _NSX))
     F = np.empty((_NF, n))
     ytmp = np.empty(n)
     y = y0.copy()

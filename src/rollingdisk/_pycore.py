@@ -51,15 +51,15 @@ _SCALAR_NP = _ScalarNumpy()
 
 # ------------------------------------------------------------------ the loops, vectorized
 def _combine(y, dt, coef, K, m, out):
-    out[:] = y + dt * (coef[:m] @ K[:m])
+    out[:] = y + dt * (K[:, :m] @ coef[:m])  # K: one column per stage
 
 
 def _dense_tail(y, y_new, f_new, dt, K, F):
     dy = y_new - y
     F[0] = dy
-    F[1] = dt * K[0] - dy
-    F[2] = 2.0 * dy - dt * (f_new + K[0])
-    F[3:] = dt * (_src._D @ K)
+    F[1] = dt * K[:, 0] - dy
+    F[2] = 2.0 * dy - dt * (f_new + K[:, 0])
+    F[3:] = dt * (_src._D @ K.T)
 
 
 def _dense_value(y, F, x, out):
@@ -78,7 +78,7 @@ def _error_norm_v(y, y_new, K, dt, rtol, atolv):
     n = y.shape[0]
     keep = atolv != np.inf
     sc = atolv[keep] + rtol * np.maximum(np.abs(y[keep]), np.abs(y_new[keep]))
-    Kk = K[:_src._NS + 1, keep]
+    Kk = K[keep, :_src._NS + 1].T
     e5 = float(np.sum((_src._E5 @ Kk / sc) ** 2))
     e3 = float(np.sum((_src._E3 @ Kk / sc) ** 2))
     if e5 == 0.0 and e3 == 0.0:
@@ -119,7 +119,17 @@ def _build(fast=True):
         else:
             out[:] = smooth_rhs(h, v)
 
+    def _rhs_col(rough, h, y, K, s):
+        v = y.tolist() if fast else y
+        if len(v) == 4:
+            K[:, s] = reduced_rhs(rough, h, v)
+        elif rough:
+            K[:, s] = rough_rhs(h, v)
+        else:
+            K[:, s] = smooth_rhs(h, v)
+
     ns["_rhs"] = _rhs
+    ns["_rhs_col"] = _rhs_col
     return ns
 
 
