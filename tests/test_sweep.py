@@ -121,3 +121,31 @@ def test_agreement_60x60(ground):
     m = np.abs(ds.varpi2.values) > 0.05
     agree = np.mean(ds.stable_simulated.values[m] == ds.stable.values[m])
     assert agree >= 0.995
+
+
+def test_basin_sweep_resumes_after_the_last_finished_round(tmp_path):
+    """A basin sweep stopped after round 2 resumes at round 3 (no finished round redone)
+    and ends with the uninterrupted result; the partial folder goes at the end."""
+    g = sweep.SweepGrid("rough", h=0.17, theta0=[0.4, 0.9], omega30=[1.0, 3.0])
+    whole = sweep.basin_sweep(g, 20.0, kick_max=0.6, rounds=4)
+    out = tmp_path / "b.nc"
+    calls = []
+
+    def stop(done, total, rate, eta):
+        calls.append(done)
+        if done == 2:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        sweep.basin_sweep(g, 20.0, kick_max=0.6, rounds=4, out=out, progress=stop)
+    assert not out.exists()
+    assert sorted(p.name for p in (tmp_path / "b.nc.partial").glob("round_*")) == \
+        ["round_000.npz", "round_001.npz"]
+    seen = []
+    ds = sweep.basin_sweep(g, 20.0, kick_max=0.6, rounds=4, out=out,
+                           progress=lambda *a: seen.append(a[0]))
+    assert seen == [3, 4, 5]
+    assert not (tmp_path / "b.nc.partial").exists()
+    np.testing.assert_array_equal(ds.kick_basin.values, whole.kick_basin.values)
+    np.testing.assert_array_equal(sweep.open_sweep(out).kick_basin.values,
+                                  whole.kick_basin.values)

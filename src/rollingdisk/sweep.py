@@ -479,27 +479,49 @@ def basin_sweep(grid: SweepGrid, t_end: float, *, kick_max: float = 1.0, rounds:
     first = None
     # round 0 tests kick_max itself; then bisection
     trial = hi.copy()
-    for r in range(rounds + 1):
+    start = 0
+    folder = None
+    if out is not None:  # each finished round is kept: a rerun resumes after the last one
+        out = _check_out(out)
+        folder = out.with_name(out.name + ".partial")
+        key = json.dumps({"grid": asdict(grid), "t_end": t_end, "kick_max": kick_max,
+                          "rtol": rtol, "atol": atol, "max_steps": int(max_steps)},
+                         sort_keys=True, allow_nan=False)
+        saved = _last_round(folder, key)
+        if saved is not None:
+            start, lo, hi, trial, first = saved
+        else:
+            if folder.exists():
+                shutil.rmtree(folder)
+            folder.mkdir()
+            (folder / "basin.json").write_text(key)
+    for r in range(start, rounds + 1):
         # one batch: every point with its own kick (the grid's states list)
         ds = _basin_round(grid, trial, t_end, executor, workers, chunk, rtol, atol, max_steps)
         ok = ds["stable_simulated"].values.reshape(shape) == 1
         if first is None:
-            first = ds
+            first = {"stable": ds["stable"].values.reshape(shape),
+                     "varpi2": ds["varpi2"].values.reshape(shape)}
             lo = np.where(ok, kick_max, 0.0)
             hi = np.where(ok, kick_max, kick_max)
         else:
             lo = np.where(ok, trial, lo)
             hi = np.where(ok, hi, trial)
         trial = 0.5 * (lo + hi)
+        if folder is not None:
+            tmp = folder / f".round_{r:03d}.npz.tmp"
+            with open(tmp, "wb") as fh:
+                np.savez(fh, lo=lo, hi=hi, trial=trial, **first)
+            os.replace(tmp, folder / f"round_{r:03d}.npz")  # the round's completion record
         if progress is not None:
             progress(r + 1, rounds + 1, float("nan"), float("nan"))
     import xarray as xr
 
-    st = first["stable"].values.reshape(shape)
+    st = first["stable"]
     basin = np.where(st >= 0, lo, np.nan)
     dims = ("h", "theta0", grid.second)
     res = xr.Dataset(
-        {"kick_basin": (dims, basin), "varpi2": (dims, first["varpi2"].values.reshape(shape)),
+        {"kick_basin": (dims, basin), "varpi2": (dims, first["varpi2"]),
          "stable": (dims, st)},
         coords={"h": list(grid.h), "theta0": list(grid.theta0),
                 grid.second: list(getattr(grid, grid.second))})
@@ -507,8 +529,25 @@ def basin_sweep(grid: SweepGrid, t_end: float, *, kick_max: float = 1.0, rounds:
                       "rounds": rounds, "rtol": rtol, "atol": atol,
                       "rule": f"bounded: completed and max_dtheta <= {BOUND_FACTOR} * kick"})
     if out is not None:
-        _save(res, _check_out(out))
+        _save(res, out)
+        shutil.rmtree(folder, ignore_errors=True)
     return res
+
+
+def _last_round(folder: Path, key: str):
+    """``(next round, lo, hi, trial, first)`` from the last finished round of a basin
+    sweep with the same arguments (``key``), or None."""
+    try:
+        if (folder / "basin.json").read_text() != key:
+            return None
+    except OSError:
+        return None
+    rounds = sorted(folder.glob("round_*.npz"))
+    if not rounds:
+        return None
+    with np.load(rounds[-1]) as z:
+        first = {"stable": z["stable"], "varpi2": z["varpi2"]}
+        return (int(rounds[-1].stem.split("_")[1]) + 1, z["lo"], z["hi"], z["trial"], first)
 
 
 def _basin_round(grid, kicks, t_end, executor, workers, chunk, rtol, atol, max_steps):
