@@ -98,7 +98,28 @@ def test_rC_grid_and_basin():
     assert np.all((b.kick_basin.values >= 0) & (b.kick_basin.values <= 0.5))
 
 
+@pytest.mark.parametrize("ground, threshold", [("rough", 1 / 3), ("smooth", 1.0)])
+def test_straight_line_grid(ground, threshold):
+    # an upright thin disk rolling at omega0 is stable iff omega0^2 > 1/3 on rough ground
+    # (the classic v^2 > g a / 3) and omega0^2 > I1/I3^2 = 1 on smooth ground (the
+    # gyroscopic term (I3 omega0)^2/I1 must beat the toppling moment m g a)
+    w = np.array([0.3, 0.45, 0.7, 0.9, 1.2, 2.0, 3.0])
+    g = sweep.SweepGrid(ground, h=(0.0, 0.5), omega0=w)
+    assert g.shape == (2, w.size) and g.dims == ("h", "omega0")
+    ds = sweep.run_sweep(g, 100.0)
+    assert ds.varpi2.dims == ("h", "omega0", "amplitude")
+    assert np.allclose(ds.theta0.values, np.arctan([0.0, 0.5]))
+    assert np.array_equal(ds.stable.values[0, :, 0], (w**2 > threshold).astype(np.int8))
+    m = np.abs(ds.varpi2.values) > 0.05
+    assert m.sum() >= 10
+    assert np.array_equal(ds.stable_simulated.values[m], ds.stable.values[m])
+    b = sweep.basin_sweep(g, 20.0, kick_max=0.3, rounds=2)
+    assert b.kick_basin.dims == ("h", "omega0")
+
+
 def test_bad_input():
+    with pytest.raises(ParameterError, match="theta0"):
+        sweep.SweepGrid("rough", theta0=[0.5], omega0=[1.0])
     with pytest.raises(ParameterError):
         sweep.SweepGrid("icy", theta0=[0.5], omega30=[1.0])
     with pytest.raises(ParameterError):

@@ -18,7 +18,18 @@ def test_sweep_cli_json(tmp_path, capsys):
     assert rec["n"] == 9 and rec["agreement"] == 1.0 and out.is_dir()
 
 
+def test_sweep_cli_straight_lines(tmp_path, capsys):
+    out = tmp_path / "s.nc"
+    rc = main(["sweep", "--ground", "rough", "--h", "0:0.5:2", "--omega0", "0.3:2:4",
+               "--t-end", "50", "--out", str(out), "--json"])
+    assert rc == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["n"] == 8 and rec["agreement"] == 1.0 and out.is_file()
+
+
 @pytest.mark.parametrize("argv", [
+    ["--ground", "rough", "--theta0", "0.5", "--omega0", "1", "--t-end", "5"],
+    ["--ground", "rough", "--omega30", "1", "--t-end", "5"],
     ["--ground", "smooth", "--theta0", "0.5", "--rC", "1", "--t-end", "5"],
     ["--ground", "rough", "--theta0", "0.5:1:x", "--omega30", "1", "--t-end", "5"],
     ["--ground", "rough", "--theta0", "0.5", "--omega30", "1", "--t-end", "-5"],
@@ -42,3 +53,6 @@ def test_sweep_plots():
     assert out["mesh"] is not None
     out = plot_basin_map(basin_sweep(g, 10.0, kick_max=0.2, rounds=1))
     assert out["colorbar"] is not None
+    s = SweepGrid("smooth", h=[0.0, 0.3, 0.6], omega0=[0.5, 1.5, 2.5])
+    out = plot_nonlinear_map(run_sweep(s, 10.0))
+    assert out["ax"].get_ylabel() == "$h$" and out["boundary"] is not None

@@ -967,19 +967,23 @@ def _sweep_range(text: str) -> list[float]:
 
 
 def _add_sweep(sub) -> None:
-    """``rollingdisk sweep``: perturbed steady circles over a grid (issue 12)."""
+    """``rollingdisk sweep``: perturbed steady motions over a grid (issue 12)."""
     p = sub.add_parser(
-        "sweep", help="integrate perturbed steady circles over a parameter grid",
-        description="Integrate a perturbed steady circle from every point of a grid "
-        "theta0 x (omega30 | rC | Omega0) (x h) and store per-trajectory summaries next to "
-        "the closed-form varpi^2 (docs/sweeps.md). Ranges as A:B:N.")
+        "sweep", help="integrate perturbed steady motions over a parameter grid",
+        description="Integrate a perturbed steady motion from every point of a grid: "
+        "circles theta0 x (omega30 | rC | Omega0) (x h), or straight lines h x omega0 (at "
+        "the tilt arctan(h)), and store per-trajectory summaries next to the closed-form "
+        "varpi^2 (docs/sweeps.md). Ranges as A:B:N.")
     p.add_argument("--ground", choices=("rough", "smooth"), required=True)
     p.add_argument("--h", type=_sweep_range, default=[0.17], help="H or A:B:N")
-    p.add_argument("--theta0", type=_sweep_range, required=True, help="A:B:N (radians or deg)")
+    p.add_argument("--theta0", type=_sweep_range, default=None,
+                   help="A:B:N (radians or deg); required for circles, not with --omega0")
     g = p.add_mutually_exclusive_group(required=True)
     g.add_argument("--omega30", type=_sweep_range)
     g.add_argument("--rC", type=_sweep_range)
     g.add_argument("--Omega0", type=_sweep_range)
+    g.add_argument("--omega0", type=_sweep_range,
+                   help="straight lines rolling at omega20 = omega0 (A:B:N)")
     p.add_argument("--t-end", type=float, required=True, dest="t_end")
     p.add_argument("--kick", type=float, default=None, help="kick in omega1 (default 1e-3)")
     p.add_argument("--perturb", type=float, default=None, help="tilt added to theta0")
@@ -1003,9 +1007,15 @@ def _run_sweep(args) -> int:
 
     from .sweep import Perturbation, SweepGrid, basin_sweep, run_sweep
 
-    second = {k: getattr(args, k) for k in ("omega30", "Omega0")}
+    second = {k: getattr(args, k) for k in ("omega30", "Omega0", "omega0")}
     second["r_C"] = args.rC
-    grid = SweepGrid(args.ground, h=args.h, theta0=args.theta0, **second)
+    if args.omega0 is not None and args.theta0 is not None:
+        raise CLIError("rollingdisk sweep: error: --omega0 (straight lines) fixes theta0 = "
+                       "arctan(h); drop --theta0")
+    if args.omega0 is None and args.theta0 is None:
+        raise CLIError("rollingdisk sweep: error: --theta0 A:B:N is required with --omega30, "
+                       "--rC or --Omega0")
+    grid = SweepGrid(args.ground, h=args.h, theta0=args.theta0 or (), **second)
     start = time.perf_counter()
     last = [0.0]
 

@@ -56,7 +56,7 @@ __all__ = ["SweepGrid", "Perturbation", "run_sweep", "basin_sweep", "open_sweep"
 BOUND_FACTOR = 20.0
 GROW_LO = 2.0
 GROW_HI = 10.0
-_SECOND = ("omega30", "r_C", "Omega0")
+_SECOND = ("omega30", "r_C", "Omega0", "omega0")
 
 
 @dataclass(frozen=True)
@@ -91,12 +91,24 @@ class Perturbation:
 
 @dataclass(frozen=True)
 class SweepGrid:
-    """A grid of steady circles: ``h x theta0 x (omega30 | r_C | Omega0)`` on one ground.
+    """A grid of steady motions on one ground: circles ``h x theta0 x (omega30 | r_C |
+    Omega0)`` or straight lines ``h x omega0``.
 
     Give exactly one of ``omega30``, ``r_C`` (rough ground: Omega0^2 from eq. 31, NaN where
-    no steady motion has that radius) and ``Omega0``.  Alternatively give ``states``, a list
-    of arbitrary reduced initial states ``(theta, omega1, omega2, omega3)`` (then theta0 of
-    each is its own theta and no perturbation is added).
+    no steady motion has that radius), ``Omega0`` (each with ``theta0``), or ``omega0``
+    (without ``theta0``): straight lines rolling at ``omega20 = omega0`` at the
+    static-equilibrium tilt ``theta0 = arctan(h)`` of each h (section 3.1; the lean
+    ``-arctan(h)`` is the mirror image, eq. 18's symmetry, with the same stability).
+    Alternatively give ``states``, a list of arbitrary reduced initial states ``(theta,
+    omega1, omega2, omega3)`` (then theta0 of each is its own theta and no perturbation is
+    added).
+
+    Examples
+    --------
+    >>> SweepGrid("rough", h=(0.0, 0.5), omega0=(0.5, 1.0, 2.0)).shape
+    (2, 3)
+    >>> SweepGrid("rough", theta0=(0.1, 0.2), omega30=(1.0,)).dims
+    ('h', 'theta0', 'omega30')
     """
 
     ground: str
@@ -105,6 +117,7 @@ class SweepGrid:
     omega30: tuple | None = None
     r_C: tuple | None = None
     Omega0: tuple | None = None
+    omega0: tuple | None = None
     states: tuple | None = None
 
     def __post_init__(self):
@@ -125,6 +138,16 @@ class SweepGrid:
             raise ParameterError(f"give exactly one of {_SECOND}, got {given}")
         if given[0] == "r_C" and self.ground != "rough":
             raise ParameterError("r_C determines Omega0 on rough ground only (eq. 31)")
+        if given[0] == "omega0":
+            if np.size(self.theta0):
+                raise ParameterError("omega0 (straight lines) fixes theta0 = arctan(h); "
+                                     "do not give theta0")
+            object.__setattr__(self, "theta0", ())
+            v = tuple(check_real("omega0", x) for x in np.atleast_1d(self.omega0))
+            if not v:
+                raise ParameterError("omega0 must not be empty")
+            object.__setattr__(self, "omega0", v)
+            return
         th = tuple(check_real("theta0", x, low=-math.pi / 2, high=math.pi / 2, low_open=True,
                               high_open=True) for x in np.atleast_1d(self.theta0))
         if not th:
@@ -140,10 +163,37 @@ class SweepGrid:
         return next(k for k in _SECOND if getattr(self, k) is not None)
 
     @property
+    def straight(self) -> bool:
+        """True for a grid of straight lines (``omega0``)."""
+        return self.states is None and self.omega0 is not None
+
+    @property
+    def dims(self) -> tuple:
+        """Names of the grid's axes (the dataset's dims before ``amplitude``)."""
+        if self.states is not None:
+            return ("point",)
+        if self.straight:
+            return ("h", "omega0")
+        return ("h", "theta0", self.second)
+
+    @property
     def shape(self) -> tuple:
         if self.states is not None:
             return (len(self.states),)
+        if self.straight:
+            return (len(self.h), len(self.omega0))
         return (len(self.h), len(self.theta0), len(getattr(self, self.second)))
+
+    def coords(self) -> dict:
+        """The grid's coordinates for an ``xarray.Dataset`` (straight lines also carry
+        their tilt ``theta0`` along h)."""
+        if self.states is not None:
+            return {"theta_init": ("point", [s[0] for s in self.states])}
+        if self.straight:
+            return {"h": list(self.h), "omega0": list(self.omega0),
+                    "theta0": ("h", [math.atan(x) for x in self.h])}
+        return {"h": list(self.h), "theta0": list(self.theta0),
+                self.second: list(getattr(self, self.second))}
 
 
 @dataclass(frozen=True)
@@ -187,19 +237,27 @@ def _setup(spec: _Spec, i0: int, i1: int):
         kick = np.zeros(n)
         tilt = np.zeros(n)
         return x0, h, theta_ref, varpi2, stable, np.full(n, np.nan)
-    sh = g.shape
-    ih, it, iv = np.unravel_index(q, sh)
     second = g.second
     vals = np.asarray(getattr(g, second))
+    if g.straight:
+        ih, iv = np.unravel_index(q, g.shape)
+        it = ih
+        thetas = [math.atan(x) for x in g.h]  # the SE tilt of each h (section 3.1)
+    else:
+        ih, it, iv = np.unravel_index(q, g.shape)
+        thetas = g.theta0
     for j in range(n):
         hh = g.h[ih[j]]
-        th = g.theta0[it[j]]
+        th = thetas[it[j]]
         v = vals[iv[j]]
         h[j] = hh
         theta_ref[j] = th
         disk = Disk(hh)
         try:
-            if second == "omega30":
+            if second == "omega0":
+                m = steady.straight_line(disk, g.ground, v)
+                th = theta_ref[j] = m.theta0
+            elif second == "omega30":
                 if v == 0:
                     continue
                 m = steady.steady_motion(disk, g.ground, th, Omega0=v / math.cos(th))
@@ -273,15 +331,9 @@ def _dataset(spec: _Spec, cols: dict, executor: str):
     g = spec.grid
     p = spec.perturbation
     na = len(p.kick)
-    if g.states is not None:
-        dims = ("point", "amplitude")
-        shape = (len(g.states), na)
-        coords = {"theta_init": ("point", [s[0] for s in g.states])}
-    else:
-        dims = ("h", "theta0", g.second, "amplitude")
-        shape = (*g.shape, na)
-        coords = {"h": list(g.h), "theta0": list(g.theta0),
-                  g.second: list(getattr(g, g.second))}
+    dims = (*g.dims, "amplitude")
+    shape = (*g.shape, na)
+    coords = g.coords()
     coords["kick"] = ("amplitude", list(p.kick))
     coords["tilt"] = ("amplitude", list(p.tilt))
     data = {k: (dims, np.asarray(v).reshape(shape)) for k, v in cols.items()}
@@ -347,7 +399,8 @@ def run_sweep(grid: SweepGrid, t_end: float, *, perturbation: Perturbation | Non
     Returns
     -------
     xarray.Dataset
-        Dims ``(h, theta0, omega30|r_C|Omega0, amplitude)`` (or ``(point, amplitude)``);
+        Dims ``(h, theta0, omega30|r_C|Omega0, amplitude)``, ``(h, omega0, amplitude)``
+        for straight lines, or ``(point, amplitude)``;
         variables varpi2, stable (closed form, -1 where no steady motion), status, t_end,
         max_dtheta, frequency, growth_rate, energy_drift, stable_simulated, ... (module
         docstring for the rules).
@@ -519,12 +572,11 @@ def basin_sweep(grid: SweepGrid, t_end: float, *, kick_max: float = 1.0, rounds:
 
     st = first["stable"]
     basin = np.where(st >= 0, lo, np.nan)
-    dims = ("h", "theta0", grid.second)
+    dims = grid.dims
     res = xr.Dataset(
         {"kick_basin": (dims, basin), "varpi2": (dims, first["varpi2"]),
          "stable": (dims, st)},
-        coords={"h": list(grid.h), "theta0": list(grid.theta0),
-                grid.second: list(getattr(grid, grid.second))})
+        coords=grid.coords())
     res.attrs.update({"ground": grid.ground, "t_end": t_end, "kick_max": kick_max,
                       "rounds": rounds, "rtol": rtol, "atol": atol,
                       "rule": f"bounded: completed and max_dtheta <= {BOUND_FACTOR} * kick"})
