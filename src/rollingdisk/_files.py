@@ -26,7 +26,7 @@ from pathlib import Path
 from .errors import ParameterError
 
 __all__ = ["Terminated", "atomic_file", "atomic_dir", "check_writable",
-           "check_replaceable", "terminate_as_exception", "check_signals"]
+           "check_replaceable", "terminate_as_exception", "check_signals", "pending_signal"]
 
 #: Signals received while :func:`terminate_as_exception` is active (see check_signals).
 _PENDING: list[int] = []
@@ -71,6 +71,13 @@ def terminate_as_exception() -> Iterator[None]:
         signal.signal(signal.SIGTERM, old)
         signal.signal(signal.SIGINT, old_int)
         sys.unraisablehook = old_hook
+
+
+def pending_signal() -> int | None:
+    """The last signal received under :func:`terminate_as_exception`, or None: an error
+    raised after it (a library that caught the signal's exception and failed in its own
+    way) is reported as the interruption it is."""
+    return _PENDING[-1] if _PENDING else None
 
 
 def check_signals() -> None:

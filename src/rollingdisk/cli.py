@@ -23,10 +23,17 @@ from __future__ import annotations
 import argparse
 import math
 import os
+import signal
 import sys
 from collections.abc import Sequence
 
-from ._files import Terminated, check_signals, check_writable, terminate_as_exception
+from ._files import (
+    Terminated,
+    check_signals,
+    check_writable,
+    pending_signal,
+    terminate_as_exception,
+)
 from .disk import DEFAULT_H, H_MAX, check_int, check_real
 from .errors import INPUT_ERRORS, ParameterError
 
@@ -1150,30 +1157,44 @@ def main(argv: Sequence[str] | None = None) -> int:
             check_signals()  # a Ctrl-C whose exception Python swallowed still counts
             return status
     except KeyboardInterrupt:
-        _say("rollingdisk: interrupted")
-        return 130
+        return _stopped(True)
     except Terminated:
-        _say("rollingdisk: terminated")
-        return 143
-    except CLIError as exc:
+        return _stopped(False)
+    except Exception as exc:
+        if pending_signal() is not None:  # the error came after Ctrl-C / SIGTERM: report that
+            return _stopped(pending_signal() == signal.SIGINT)
+        return _error_status(exc, args)
+
+
+def _stopped(interrupted: bool) -> int:
+    """One line and exit status 130 (Ctrl-C) or 143 (SIGTERM)."""
+    _say("rollingdisk: interrupted" if interrupted else "rollingdisk: terminated")
+    if interrupted:
+        # A KeyboardInterrupt that passed through an exec() of a string on its way here
+        # (libraries build code that way) leaves CPython's _Py_UnhandledKeyboardInterrupt
+        # set, and the interpreter would then exit by SIGINT (status -2) instead of 130.
+        # Each exec() of a string clears that flag first (pythonrun.c, run_eval_code_obj).
+        exec("pass")  # a constant string
+    return 130 if interrupted else 143
+
+
+def _error_status(exc: Exception, args) -> int:
+    """The one line and exit status of an exception that ended a command (called in its
+    ``except`` clause, so that a bug's traceback is the exception's own)."""
+    if isinstance(exc, CLIError):
         _say(str(exc))
         return 2
-    except INPUT_ERRORS as exc:
+    if isinstance(exc, INPUT_ERRORS):
         _say(f"{_prog(args)}: error: {exc}")
         return 2
-    except OSError as exc:
-        if not _on_user_path(exc, args):
-            return _bug(args)
+    if isinstance(exc, OSError) and _on_user_path(exc, args):
         where = f"{exc.filename}: " if exc.filename else ""
         _say(f"{_prog(args)}: error: {where}{exc.strerror or exc}")
         return 2
-    except Exception as exc:
-        # an exception raised while cleaning up after Ctrl-C / SIGTERM: still an interruption
-        context = exc.__context__
-        while context is not None:
-            if isinstance(context, (KeyboardInterrupt, Terminated)):
-                interrupted = isinstance(context, KeyboardInterrupt)
-                _say("rollingdisk: interrupted" if interrupted else "rollingdisk: terminated")
-                return 130 if interrupted else 143
-            context = context.__context__
-        return _bug(args)
+    # an exception raised while cleaning up after Ctrl-C / SIGTERM: still an interruption
+    context = exc.__context__
+    while context is not None:
+        if isinstance(context, (KeyboardInterrupt, Terminated)):
+            return _stopped(isinstance(context, KeyboardInterrupt))
+        context = context.__context__
+    return _bug(args)
