@@ -61,15 +61,22 @@ def test_creep_rhs_equals_sympy_sliding_system():
         ht, s, c, p, y_P, z_P = eq._geometry(h, th)
         u = np.array([v_Cx - w2 + ht * w3, v_Cy - w1 * z_P])  # eq. (6)
         e = creep_factor(np.hypot(*u), u_s) * u
-        wx, wy = w1, w2 * c - w3 * s
-        kr = -c_roll / math.sqrt(wx * wx + wy * wy + eps * eps)
-        ka = -c_air * w3 / c ** 3
-        M = (0.0, -ka * s, ka * c, kr * wx, kr * wy, 0.0)
+        # the library's moment models: AirDrag, and RollingResistance with |omega_h|
+        # replaced by sqrt(|omega_h|^2 + eps^2)
+        wx, wy, _ = rd.angular_velocity_xyz(th, w1, w2, w3)
+        r = math.hypot(wx, wy)
+        M1 = rd.RollingResistance(c_roll).moment(th, w1, w2, w3, 1.0)
+        M1 = tuple(m * r / math.sqrt(r * r + eps * eps) for m in M1)
+        M = (*rd.AirDrag(c_air).moment(th, w1, w2, w3), *M1)
         ref = sliding(ht, th, w1, w2, w3, v_Cx, v_Cy, mu, *e, *M)
         dx, F_z, _ = _rhs(h, mu, u_s, c_roll, c_air, eps, x)
         want = [ref[6], ref[7], w1, ref[0], ref[1], ref[2]]  # dv_Cx, dv_Cy, theta', dw
         np.testing.assert_allclose(dx[:6], want, rtol=1e-10, atol=1e-10)
         np.testing.assert_allclose(F_z, ref[5], rtol=1e-10, atol=1e-12)
+        # the element-wise path (recorded steps) equals the integrator's scalar path
+        dx2, F_z2, n2 = _rhs(h, mu, u_s, c_roll, c_air, eps, np.stack([x, x], axis=1))
+        np.testing.assert_allclose(dx2[:, 1], dx, rtol=1e-14, atol=1e-300)
+        assert F_z2[0] == F_z
 
 
 def test_creep_law_shape_derived():

@@ -302,27 +302,35 @@ def _rhs(h, mu, u_s, c_roll, c_air, eps, x):
     """Right-hand side on the reduced state ``x = [v_Cx, v_Cy, theta, omega1, omega2,
     omega3, D_slip, D_roll, D_air]``; returns ``(dx, F_z, |u|)``.
 
-    ``v_Cx, v_Cy``: velocity of C in Cxyz; ``D_*``: energy dissipated by each term."""
+    ``v_Cx, v_Cy``: velocity of C in Cxyz; ``D_*``: energy dissipated by each term.
+    Element-wise: ``x`` may be a (9,) vector (the integrator) or a (9, N) array (the
+    recorded steps, in one call)."""
     v_Cx, v_Cy, theta, w1, w2, w3 = x[0], x[1], x[2], x[3], x[4], x[5]
     ht, s, c, p, y_P, z_P = _eq._geometry(h, theta)
     u_x = v_Cx - w2 + ht * w3  # eq. (6)
     u_y = v_Cy - w1 * z_P
-    n = math.sqrt(u_x * u_x + u_y * u_y)
-    sn = n / u_s
-    f = (3.0 - 3.0 * sn + sn * sn) / u_s if sn < 1.0 else 1.0 / n  # creep law
-    # air moment (M0) from the library's model; rolling resistance smoothed (M1)
-    M0x, M0y, M0z, _, _, _ = _eq._coulomb_moments(0.0, 0.0, c_air, theta, w1, w2, w3)
+    n = np.sqrt(u_x * u_x + u_y * u_y)
+    if np.ndim(n) == 0:  # the integrator's scalar path: creep_factor without np.where
+        sn = n / u_s
+        f = (3.0 - 3.0 * sn + sn * sn) / u_s if sn < 1.0 else 1.0 / n
+    else:
+        f = creep_factor(n, u_s)
+    # air film, rollingdisk.AirDrag: M = -c omega3 e_zeta / cos^3(theta), e_zeta =
+    # (0, -sin theta, cos theta); rolling resistance, rollingdisk.RollingResistance
+    # smoothed: M1_h = -c omega_h / sqrt(|omega_h|^2 + eps^2)
+    ka = -c_air * w3 / (c * c * c)
     wx = w1
     wy = w2 * c - w3 * s
     nh2 = wx * wx + wy * wy
-    kr = -c_roll / math.sqrt(nh2 + eps * eps)
+    kr = -c_roll / np.sqrt(nh2 + eps * eps)
     # the sliding kernel with friction -mu F_z e, e = f u (not a unit vector: linear in mu e)
     d1, d2, d3, F_x, F_y, F_z = _eq._sliding_solve(h, mu, f * u_x, f * u_y, theta, w1, w2, w3,
-                                                   M0x, M0y, M0z, kr * wx, kr * wy, 0.0)
+                                                   0.0 * ka, -ka * s, ka * c,
+                                                   kr * wx, kr * wy, 0.0)
     Om = w3 / c  # eq. (2)
     P_slip = F_x * u_x + F_y * u_y
     P_roll = kr * F_z * nh2
-    P_air = -c_air * w3 * w3 / (c * c * c)
+    P_air = ka * w3  # omega . M = -c omega3^2 / cos^3(theta)
     dx = np.array([F_x + v_Cy * Om,  # eq. (8)_1 in the turning frame Cxyz
                    F_y - v_Cx * Om,  # eq. (8)_2
                    w1, d1, d2, d3,  # eq. (2), (9)
@@ -331,21 +339,22 @@ def _rhs(h, mu, u_s, c_roll, c_air, eps, x):
 
 
 def _energy(h, x):
-    """Energy (eq. 13) of a reduced state (``|v_C|`` does not depend on the frame)."""
-    y = (0.0, 0.0, x[0], x[1], 0.0, x[2], 0.0, x[3], x[4], x[5])
+    """Energy (eq. 13) of a reduced state (``|v_C|`` does not depend on the frame).
+    Element-wise over the columns of ``x``."""
+    z = 0.0 * x[0]
+    y = (z, z, x[0], x[1], z, x[2], z, x[3], x[4], x[5])
     return _eq._coulomb_energy(h, y)
 
 
 def _observables(h, x):
-    """``alpha, Omega, contact-point speed, |u|`` of a reduced state."""
+    """``alpha, Omega, contact-point speed`` of reduced states (element-wise)."""
     v_Cx, v_Cy, theta, w1, w2, w3 = x[:6]
     ht, s, c, p, y_P, z_P = _eq._geometry(h, theta)
     Om = w3 / c
     # contact point (eq. 5) X_P = X_C - y_P sin psi, Y_P = Y_C + y_P cos psi, d y_P/d theta
     # = -z_P: velocity (v_Cx - y_P Omega, v_Cy - z_P omega1) in Cxyz
-    vp = math.hypot(v_Cx - y_P * Om, v_Cy - z_P * w1)
-    u = math.hypot(v_Cx - w2 + ht * w3, v_Cy - w1 * z_P)
-    return math.pi / 2 - abs(theta), abs(Om), vp, u
+    vp = np.hypot(v_Cx - y_P * Om, v_Cy - z_P * w1)
+    return np.pi / 2 - np.abs(theta), np.abs(Om), vp
 
 
 def _initial_state(toy: EulerDisk) -> np.ndarray:
@@ -545,15 +554,18 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
     h, mu, c_roll, c_air, eps = toy.h, toy.mu, toy.rolling_resistance, toy.c_air, toy.omega_eps
     u_s = 3.0 * mu / toy.creep if mu > 0 else 1.0  # mu = 0: no friction at all
 
+    last = [1.0]  # F_z of the latest evaluation (near the accepted point) for lift-off
+
     def f(t, x):
-        return _rhs(h, mu, u_s, c_roll, c_air, eps, x)[0]
+        dx, last[0], _ = _rhs(h, mu, u_s, c_roll, c_air, eps, x)
+        return dx
 
     start = time.monotonic()
     x0 = _initial_state(toy)
     x0[3] += kick
     x0[1] = kick * _eq._geometry(toy.h, x0[2])[5]  # v_Cy = omega1 z_P: still rolling (6)
     solver = LSODA(f, 0.0, x0, t_max, rtol=rtol, atol=atol)
-    ts, xs, fz, us = [0.0], [x0.copy()], [_rhs(h, mu, u_s, c_roll, c_air, eps, x0)[1]], [0.0]
+    ts, xs = [0.0], [x0.copy()]
     log_span = math.log(toy.alpha0 / alpha_end)
     end = None
     status, message = "failed", ""
@@ -581,14 +593,14 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
             message = f"LSODA failed at t = {solver.t:.6g}: {msg}"
             break
         x = solver.y
-        _, F_z, u = _rhs(h, mu, u_s, c_roll, c_air, eps, x)
-        if not all(math.isfinite(v) for v in x):
+        if not math.isfinite(x.sum()):
             message = f"the state left floating-point range at t = {solver.t:.6g}"
             break
         ts.append(solver.t)
         xs.append(x.copy())
-        fz.append(F_z)
-        us.append(u)
+        F_z = last[0]
+        if F_z < 0.0:  # confirm at the accepted state itself
+            F_z = _rhs(h, mu, u_s, c_roll, c_air, eps, x)[1]
         n_short = n_short + 1 if solver.t - t_old < 1e-12 * (1.0 + abs(solver.t)) else 0
         alpha = math.pi / 2 - abs(x[2])
         if progress is not None and n % 100 == 0:
@@ -618,17 +630,18 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
             0.0), 1.0))
     t = np.array(ts)
     X = np.array(xs)
-    obs = np.array([_observables(h, x) for x in X])
-    E = np.array([_energy(h, x) for x in X])
+    XT = X.T  # (9, N): every recorded quantity in one element-wise call
+    alpha, Omega, vp = _observables(h, XT)
+    _, fz, us = _rhs(h, mu, u_s, c_roll, c_air, eps, XT)
+    E = _energy(h, XT)
     dissipated = {k: X[:, 6 + i] for i, k in enumerate(TERMS)}
     total = E + X[:, 6:].sum(axis=1)
     balance = float(np.max(np.abs(total - total[0])) / max(abs(total[0]), 1.0))
-    alpha, Omega, vp = obs[:, 0], obs[:, 1], obs[:, 2]
     t0, fitted = _fit_exponents(t, alpha, Omega, vp, (lo, hi))
     predicted = (predicted_exponents(toy, (lo, hi)) if predict
                  else {k: math.nan for k in EXPONENT_NAMES})
     return EulerDiskResult(toy=toy, t=t, alpha=alpha, Omega=Omega, contact_speed=vp,
-                           slip_speed=obs[:, 3], F_z=np.array(fz), E=E,
+                           slip_speed=us, F_z=fz, E=E,
                            dissipated=dissipated, t_end=float(t[-1]), end=end, status=status,
                            message=message, t0=t0, exponents=fitted, predicted=predicted,
                            fit_window=(lo, hi), energy_balance=balance, n_steps=n,
