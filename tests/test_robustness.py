@@ -333,7 +333,7 @@ def test_a_signal_leaves_nothing(tmp_path, argv, sig, rc, word):
     """Ctrl-C or SIGTERM while the pictures are made: one line, the right status, no file,
     no temporary. The atlas is stopped while its animation helper process runs (step 6)."""
     if argv[0] == "atlas":
-        code, err = _interrupt(argv, tmp_path, sig, after=0.2, marker="[6/8]")
+        code, err = _interrupt(argv, tmp_path, sig, after=0.2, marker="[6/9]")
     else:
         code, err = _interrupt(argv, tmp_path, sig, after=2.5)
     assert code == rc, err
