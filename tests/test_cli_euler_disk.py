@@ -19,8 +19,10 @@ SHORT = ["--alpha0", "0.05", "--quiet"]
 def test_out_folder_complete(tmp_path, capsys):
     out = tmp_path / "run"
     assert main(["euler-disk", *SHORT, "--out", str(out)]) == 0
-    text = capsys.readouterr().out
+    captured = capsys.readouterr()
+    text = captured.out
     assert "fell flat" in text and "exponents" in text
+    assert captured.err == ""  # --quiet: no progress bar
     assert sorted(p.name for p in out.iterdir()) == sorted(EULER_DISK_FILES)
     png, csv, js = (out / name for name in EULER_DISK_FILES)
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -231,6 +231,34 @@ def test_bounded_work_statuses():
     assert all(math.isnan(v) for v in r.exponents.values())
 
 
+def test_collapsing_steps_are_a_status(monkeypatch):
+    """A right-hand side no step can resolve (v_Cx pushed back across 0 with +-1e3, a
+    chattering switch): the run stops with "step sizes collapsed", it does not hang."""
+    import rollingdisk.euler_disk as ed
+
+    rhs = ed._rhs
+
+    def chatter(*args):
+        dx, F_z, n = rhs(*args)
+        x = args[-1]
+        if np.ndim(x[0]) == 0:
+            dx = dx.copy()
+            dx[0] = -1e3 if x[0] > 0 else 1e3
+        return dx, F_z, n
+
+    monkeypatch.setattr(ed, "_rhs", chatter)
+    r = ed.run_euler_disk(predict=False, max_wall_time=30.0)
+    assert r.status == "failed" and "collapsed" in r.message and r.n_steps < 1000
+
+
+def test_progress_fractions():
+    seen = []
+    r = run_euler_disk(EulerDisk(alpha0=0.05), predict=False, progress=seen.append)
+    assert r.end == "fell flat"
+    assert seen[-1] == 1.0 and len(seen) < 400
+    assert all(0.0 <= a <= b <= 1.0 for a, b in zip(seen, seen[1:]))
+
+
 @pytest.mark.parametrize("kw, name", [
     ({"mu": -1}, "mu"), ({"radius": 0}, "radius"), ({"creep": 0}, "creep"),
     ({"alpha0": 2.0}, "alpha0"), ({"rolling_resistance": math.nan}, "rolling_resistance"),
