@@ -198,13 +198,24 @@ def test_mu_zero_is_smooth_ground():
 def test_toy_falls_flat_with_predicted_exponents(toy_run):
     r = toy_run
     assert r.status == "completed" and r.end == "fell flat", r.message
-    assert r.alpha[-1] <= 1e-3 < r.alpha[-2]
+    assert r.alpha[-1] == pytest.approx(1e-3, rel=1e-9) and r.alpha[-2] > 1e-3  # located
     assert 90.0 < r.t_end_s < 110.0  # the toy's quoted spin time, ~100 s (chosen c)
     assert r.t0 > r.t_end  # the power law's alpha = 0 lies beyond alpha_end
     for name in ("alpha", "Omega", "contact_speed"):
         assert r.exponents[name] == pytest.approx(r.predicted[name], abs=5e-3), name
     assert r.F_z.min() > 0.9
     assert r.wall_time < 60.0
+
+
+def test_lift_off_located():
+    """A hard kick (omega1 = 2) lifts the toy: F_z (eq. 11) reaches 0, located on the
+    step's dense output; a harder one (4) needs a pull from the plane at t = 0."""
+    r = run_euler_disk(kick=2.0, t_max=50.0, predict=False)
+    assert r.status == "completed" and r.end == "lifted off", r.message
+    assert abs(r.F_z[-1]) < 1e-9 and np.all(r.F_z[:-1] > 0)
+    r = run_euler_disk(kick=4.0, t_max=50.0, predict=False)
+    assert r.end == "lifted off" and "at the start" in r.message and r.t.size == 1
+    assert r.F_z[0] < 0
 
 
 @pytest.mark.slow

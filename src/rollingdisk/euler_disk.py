@@ -475,6 +475,18 @@ def _fit_exponents(t, alpha, Omega, vp, window):
 
 
 # ------------------------------------------------------------------------- driver
+def _locate(dense, event, t_a, t_b):
+    """Time and state in ``[t_a, t_b]`` where ``event(dense(t))`` changes sign (it is
+    positive at ``t_a``, not at ``t_b``), by ``brentq`` on the step's interpolant."""
+    from scipy.optimize import brentq
+
+    if event(dense(t_a)) <= 0.0:  # nothing to locate (already there at the step start)
+        return t_a, dense(t_a)
+    t = brentq(lambda s: event(dense(s)), t_a, t_b, xtol=1e-14 * (1.0 + abs(t_b)),
+               rtol=8.9e-16)
+    return t, dense(t)
+
+
 def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
                    t_max: float = 1e5, rtol: float = 1e-9, atol: float = 1e-11,
                    max_steps: int = 2_000_000, max_wall_time: float = 120.0,
@@ -569,11 +581,15 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
     log_span = math.log(toy.alpha0 / alpha_end)
     end = None
     status, message = "failed", ""
+    F_z0 = _rhs(h, mu, u_s, c_roll, c_air, eps, x0)[1]
+    if F_z0 < 0.0:  # the kick asks for a pull from the plane: no motion in contact at all
+        end, status = "lifted off", "completed"
+        message = f"lifted off at the start: F_z(0) = {F_z0:.4g} < 0 (eq. 11)"
     n_short = 0
     shown = -1.0
     side = math.copysign(1.0, x0[2])
     n = 0
-    while True:
+    while end is None:
         if solver.status == "finished":
             message = f"reached t_max = {t_max:g} before any end (alpha = " \
                       f"{math.pi / 2 - abs(xs[-1][2]):.3g})"
@@ -608,17 +624,23 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
             if done >= shown + 0.005:  # a few hundred updates per run, not one per step
                 shown = done
                 progress(done)
+        event = None  # a function of the state that changes sign at the end
         if alpha <= alpha_end:
-            end, message = "fell flat", f"fell flat: alpha = {alpha:.3g} <= {alpha_end:g}"
+            end, message = "fell flat", f"fell flat: alpha = {alpha_end:g}"
+            event = lambda z: math.pi / 2 - abs(z[2]) - alpha_end  # noqa: E731
         elif F_z < 0.0:
-            end, message = "lifted off", f"lifted off: F_z = {F_z:.3g} < 0 (eq. 11)"
+            end, message = "lifted off", "lifted off: F_z = 0 (eq. 11)"
+            event = lambda z: _rhs(h, mu, u_s, c_roll, c_air, eps, z)[1]  # noqa: E731
         elif math.copysign(1.0, x[2]) != side:
-            end, message = "edge contact", "theta changed sign: the other rim edge touches"
+            end, message = "edge contact", "theta = 0: the other rim edge touches"
+            event = lambda z: z[2] * side  # noqa: E731
         elif max(abs(v) for v in x[:2]) < 1e-10 and max(abs(v) for v in x[3:6]) < 1e-10:
             end, message = "came to rest", "came to rest: |omega|, |v_C| < 1e-10"
         if end is not None:
+            if event is not None:  # locate it on the step's dense output
+                ts[-1], xs[-1] = _locate(solver.dense_output(), event, t_old, solver.t)
             status = "completed"
-            message += f" at t = {solver.t:.6g} ({solver.t * toy.time_unit:.4g} s)"
+            message += f" at t = {ts[-1]:.6g} ({ts[-1] * toy.time_unit:.4g} s)"
             break
         if n_short >= 50:
             message = f"step sizes collapsed (50 steps shorter than 1e-12 (1 + t)) at " \
