@@ -201,6 +201,11 @@ def test_toy_falls_flat_with_predicted_exponents(toy_run):
     assert r.alpha[-1] == pytest.approx(1e-3, rel=1e-9) and r.alpha[-2] > 1e-3  # located
     assert 90.0 < r.t_end_s < 110.0  # the toy's quoted spin time, ~100 s (chosen c)
     assert r.t0 > r.t_end  # the power law's alpha = 0 lies beyond alpha_end
+    # the end and t0 against the adiabatic decay along the steady family (independent:
+    # quadrature of E'/|P| on the family; the run ends a little earlier, slip also
+    # dissipates, 0.7 % of the loss)
+    assert r.predicted_t_end * 0.99 < r.t_end < r.predicted_t_end
+    assert r.t0 == pytest.approx(r.predicted_t0, rel=0.01)
     for name in ("alpha", "Omega", "contact_speed"):
         assert r.exponents[name] == pytest.approx(r.predicted[name], abs=5e-3), name
     assert r.F_z.min() > 0.9
@@ -226,6 +231,7 @@ def test_toy_with_air_film():
     assert r.status == "completed" and r.end == "fell flat", r.message
     assert r.energy_balance <= 1e-9
     assert r.dissipated["air"][-1] > 0.1
+    assert r.t_end == pytest.approx(r.predicted_t_end, rel=0.02)
     assert r.exponents["alpha"] == pytest.approx(r.predicted["alpha"], abs=0.02)
     assert r.exponents["Omega"] == pytest.approx(r.predicted["Omega"], abs=0.01)
 

@@ -469,7 +469,8 @@ its spin-in-place steady motion at tilt &alpha;<sub>0</sub> = &pi;/2 &minus; &th
 = {p['alpha0']:.3g} rad and run to its end with creep friction (&mu; = {p['mu']:.3g}, creep
 coefficient {p['creep']:.4g}) and rolling resistance (length {p['rolling_resistance']:.3g}
 a); <code>rollingdisk euler-disk</code>, <code>docs/friction.md</code>. End: <b>{ed['end']}</b>
-at t = {_fmt(ed['t_end_s'])} s (status <code>{html.escape(ed['status'])}</code>); energy
+at t = {_fmt(ed['t_end_s'])} s (status <code>{html.escape(ed['status'])}</code>; the adiabatic
+decay along the steady family predicts {_fmt(ed['predicted_t_end_s'])} s); energy
 balance {_fmt(ed['energy_balance'], 2)}; {ed['n_steps']} steps in {ed['wall_time_s']:.1f} s.
 Exponents against t<sub>0</sub> &minus; t over &alpha; in ({lo:g}, {hi:g}), fitted with
 t<sub>0</sub> = {_fmt(ed['t0_s'])} s, beside those of the adiabatic decay along the steady

@@ -1117,8 +1117,11 @@ def _run_euler_disk(args) -> int:
         print(json.dumps(summary, indent=2, allow_nan=False))
         return 0
     print(result.message)
-    print(f"  end time       {result.t_end_s:.4g} s  (t = {result.t_end:.6g} sqrt(a/g))")
-    print(f"  fitted t0      {result.t0_s:.4g} s  (alpha -> 0 of the power law)")
+    unit = result.toy.time_unit
+    print(f"  end time       {result.t_end_s:.4g} s  (t = {result.t_end:.6g} sqrt(a/g); "
+          f"adiabatic decay along the steady family: {result.predicted_t_end * unit:.4g} s)")
+    print(f"  fitted t0      {result.t0_s:.4g} s  (alpha -> 0 of the power law; "
+          f"adiabatic: {result.predicted_t0 * unit:.4g} s)")
     print(f"  exponents      fitted vs predicted, alpha in {result.fit_window}")
     for name in result.exponents:
         print(f"    {name:14s} {result.exponents[name]:+.4f}   {result.predicted[name]:+.4f}")

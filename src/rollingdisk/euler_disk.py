@@ -51,7 +51,7 @@ from .disk import Disk, check_int, check_real
 from .errors import ParameterError
 
 __all__ = ["EulerDisk", "EulerDiskResult", "run_euler_disk", "predicted_exponents",
-           "creep_factor", "END_KINDS", "AIR_VISCOSITY", "FIT_WINDOW",
+           "creep_factor", "predicted_end_time", "END_KINDS", "AIR_VISCOSITY", "FIT_WINDOW",
            "FIT_WINDOW_AIR"]
 
 #: Dynamic viscosity of air at 20 C [Pa s] (CRC Handbook), the default of ``--air``.
@@ -206,6 +206,9 @@ class EulerDiskResult:
         ``Omega``, ``contact_speed`` against ``t0 - t``.
     fit_window : (float, float)
         The ``alpha`` range of the fits.
+    predicted_t_end, predicted_t0 : float
+        The same end and ``t0`` by the adiabatic decay along the steady family
+        (:func:`predicted_end_time`); ``nan`` when not predicted.
     energy_balance : float
         ``max |E + dissipated - E(0)| / max(|E(0)|, 1)`` (eq. 12).
     n_steps : int
@@ -230,6 +233,8 @@ class EulerDiskResult:
     exponents: dict
     predicted: dict
     fit_window: tuple
+    predicted_t_end: float
+    predicted_t0: float
     energy_balance: float
     n_steps: int
     wall_time: float
@@ -255,6 +260,8 @@ class EulerDiskResult:
                 "t0_s": fin(self.t0_s),
                 "alpha_end": fin(float(self.alpha[-1])),
                 "Omega_end": fin(float(self.Omega[-1])),
+                "predicted_t_end_s": fin(self.predicted_t_end * self.toy.time_unit),
+                "predicted_t0_s": fin(self.predicted_t0 * self.toy.time_unit),
                 "exponents": {k: fin(v) for k, v in self.exponents.items()},
                 "predicted": {k: fin(v) for k, v in self.predicted.items()},
                 "fit_window_alpha": list(self.fit_window),
@@ -401,6 +408,39 @@ def _family_power(toy: EulerDisk, alpha):
     return P
 
 
+def _decay_integrand(toy: EulerDisk):
+    """``s -> 2 s E'(s^2) / |P(s^2)|``: ``d(t0 - t)/ds`` of the adiabatic decay with
+    ``alpha = s^2`` (``E'`` by complex step, exact to rounding)."""
+    h = toy.h
+
+    def dE(a):
+        return float(np.imag(_family(h, complex(a, 1e-30))[0]) / 1e-30)
+
+    def integrand(s):
+        a = s * s
+        return 2.0 * s * dE(a) / _family_power(toy, a)
+
+    return integrand
+
+
+def predicted_end_time(toy: EulerDisk, alpha_end: float = 1e-3) -> tuple[float, float]:
+    """The adiabatic decay along the steady family from ``alpha0``: the time it reaches
+    ``alpha_end`` and the time ``t0`` it reaches ``alpha = 0`` (units ``sqrt(a/g)``).
+
+    ``t(alpha) = int_alpha^alpha0 E'(a) / |P(a)| da`` (see :func:`predicted_exponents`);
+    slip is not in ``P`` (no slip on the family), so a run with creep ends a little
+    earlier.  ``(inf, inf)`` without dissipation."""
+    from scipy.integrate import quad
+
+    if toy.rolling_resistance == 0.0 and toy.c_air == 0.0:
+        return math.inf, math.inf
+    f = _decay_integrand(toy)
+    tail = quad(f, 0.0, math.sqrt(alpha_end), epsabs=0.0, epsrel=1e-11, limit=400)[0]
+    body = quad(f, math.sqrt(alpha_end), math.sqrt(toy.alpha0), epsabs=0.0, epsrel=1e-11,
+                limit=400)[0]
+    return body, body + tail
+
+
 def predicted_exponents(toy: EulerDisk, window=(2e-3, 2e-2), n: int = 40) -> dict:
     """Exponents of ``alpha``, ``Omega`` and the contact-point speed against ``t0 - t``
     predicted by the adiabatic decay along the steady spin-in-place family.
@@ -421,14 +461,7 @@ def predicted_exponents(toy: EulerDisk, window=(2e-3, 2e-2), n: int = 40) -> dic
     if toy.rolling_resistance == 0.0 and toy.c_air == 0.0:
         return {k: math.nan for k in EXPONENT_NAMES}
     h = toy.h
-
-    def dE(a):  # complex step: exact to rounding
-        return float(np.imag(_family(h, complex(a, 1e-30))[0]) / 1e-30)
-
-    def integrand(s):  # a = s^2
-        a = s * s
-        return 2.0 * s * dE(a) / _family_power(toy, a)
-
+    integrand = _decay_integrand(toy)
     alphas = np.geomspace(lo, hi, n)
     edges = np.sqrt(np.concatenate([[0.0], alphas]))
     tau = np.cumsum([quad(integrand, edges[i], edges[i + 1], epsabs=0.0, epsrel=1e-11,
@@ -662,9 +695,12 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
     t0, fitted = _fit_exponents(t, alpha, Omega, vp, (lo, hi))
     predicted = (predicted_exponents(toy, (lo, hi)) if predict
                  else {k: math.nan for k in EXPONENT_NAMES})
+    pred_end, pred_t0 = (predicted_end_time(toy, alpha_end) if predict
+                         else (math.nan, math.nan))
     return EulerDiskResult(toy=toy, t=t, alpha=alpha, Omega=Omega, contact_speed=vp,
                            slip_speed=us, F_z=fz, E=E,
                            dissipated=dissipated, t_end=float(t[-1]), end=end, status=status,
                            message=message, t0=t0, exponents=fitted, predicted=predicted,
-                           fit_window=(lo, hi), energy_balance=balance, n_steps=n,
+                           fit_window=(lo, hi), predicted_t_end=pred_end,
+                           predicted_t0=pred_t0, energy_balance=balance, n_steps=n,
                            wall_time=time.monotonic() - start, extra={"state": X})
