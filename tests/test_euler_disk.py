@@ -294,3 +294,20 @@ def test_bad_toy_parameters(kw, name):
 def test_bad_run_arguments(kw, name):
     with pytest.raises(ValueError, match=name):
         run_euler_disk(**kw)
+
+
+def test_plot_draws_fitted_and_predicted_slopes():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    from rollingdisk.plotting import plot_euler_disk
+
+    r = run_euler_disk(EulerDisk(alpha0=0.05))
+    out = plot_euler_disk(r, Figure())
+    for name in ("alpha", "Omega", "contact_speed"):
+        for kind, p in (("fit", r.exponents[name]), ("predicted", r.predicted[name])):
+            x, y = out["lines"][f"{name}_{kind}"].get_data()
+            slope = np.polyfit(np.log(x), np.log(y), 1)[0]
+            assert slope == pytest.approx(p, rel=1e-9)
