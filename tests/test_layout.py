@@ -7,7 +7,7 @@ from pathlib import Path
 
 CORE = ["rollingdisk", "rollingdisk.disk", "rollingdisk.equations", "rollingdisk.steady",
         "rollingdisk._stability", "rollingdisk._simulate", "rollingdisk.regions",
-        "rollingdisk.exact"]
+        "rollingdisk.exact", "rollingdisk.euler_disk"]
 SRC = str(Path(__file__).resolve().parents[1] / "src")
 
 

@@ -328,14 +328,17 @@ def _interrupt(argv, tmp_path, sig, after: float, marker: str | None = None):
     ["animate", "--theta0", "0.5", "--Omega0", "3", "--frames", "400", "--t-end", "5",
      "--out", "m.gif"],
     ["atlas", "--quick", "--out", "at"],
-], ids=["figures", "animate", "atlas"])
+    ["euler-disk", "--out", "ed"],
+], ids=["figures", "animate", "atlas", "euler-disk"])
 def test_a_signal_leaves_nothing(tmp_path, argv, sig, rc, word):
     """Ctrl-C or SIGTERM while the pictures are made: one line, the right status, no file,
     no temporary. The atlas is stopped while its animation helper process runs (step 6)."""
     if argv[0] == "atlas":
-        code, err = _interrupt(argv, tmp_path, sig, after=0.2, marker="[6/8]")
+        code, err = _interrupt(argv, tmp_path, sig, after=0.2, marker="[6/9]")
     elif argv[0] == "figures":  # done in about 2 s: stop it while fig6 is drawn
         code, err = _interrupt(argv, tmp_path, sig, after=0.05, marker="fig6")
+    elif argv[0] == "euler-disk":  # stopped inside the integrator's loop
+        code, err = _interrupt(argv, tmp_path, sig, after=0.3, marker="simulating [")
     else:
         code, err = _interrupt(argv, tmp_path, sig, after=2.5)
     assert code == rc, err

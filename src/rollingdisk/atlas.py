@@ -11,6 +11,9 @@ half-thickness ``h`` it writes into a folder
 * one stable and one unstable steady circle on rough ground, simulated from a small tilt
   perturbation, with their plots (paths of C and P, ``theta(t)``, energy error, contact
   force) and a 3D animation each,
+* Euler's disk: the commercial toy (:mod:`rollingdisk.euler_disk`, its own ``h = 0.169``)
+  run to its end with creep friction and rolling resistance, with the fitted and the
+  predicted exponents (run in a second process alongside the other steps),
 * ``index.html`` showing it all, with relative image paths and no external resources.
 
 It sits outside the numeric core (uses matplotlib through :mod:`rollingdisk.plotting`).
@@ -37,7 +40,8 @@ __all__ = ["AtlasResult", "ATLAS_FILES", "build_atlas", "steady_trajectory"]
 #: The files of an atlas folder (the folder is written as a whole, see :func:`build_atlas`).
 ATLAS_FILES = ("thresholds.json", "existence.png", "stability.png", "varpi2.png",
                "all_omega30.png", "motion_stable.png", "motion_stable.gif",
-               "motion_unstable.png", "motion_unstable.gif", "exact.png", "index.html")
+               "motion_unstable.png", "motion_unstable.gif", "exact.png", "euler_disk.png",
+               "euler_disk.json", "index.html")
 
 
 @dataclass(frozen=True)
@@ -176,7 +180,7 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
     h = check_h(h)
     target = check_replaceable(out_dir, ATLAS_FILES, name="out_dir")
     chosen = example_motions(h)  # before any work: fails for a disk with no unstable circle
-    pr = _Progress(8, stream=stream, enabled=bool(progress))
+    pr = _Progress(9, stream=stream, enabled=bool(progress))
     try:
         with atomic_dir(target) as out:
             files, motions = _write_atlas(h, out, chosen, quick=bool(quick), pr=pr)
@@ -193,17 +197,30 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
 def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[list, dict]:
     """The steps of :func:`build_atlas`, writing into the (temporary) folder ``out``.
 
-    Returns the paths written (index excluded) and the records of the two motions."""
+    Returns the paths written (index excluded) and the records of the motions."""
+    files: list[Path] = []
+    dpi = 60 if quick else 90
+    n_map = (60, 50) if quick else (220, 180)
+    # Euler's disk runs for seconds on its own: started first, in a second process, and
+    # collected after the exact motion (step 8), so the atlas does not wait for it
+    euler = _start_child(_euler_disk_in_child, (out, quick, dpi))
+    try:
+        return _write_atlas_steps(h, out, chosen, quick=quick, pr=pr, files=files, dpi=dpi,
+                                  n_map=n_map, euler=euler)
+    finally:
+        if euler.is_alive():  # interrupted or failed: stop the helper (the folder is dropped)
+            euler.terminate()
+            euler.join()
+
+
+def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
+    """The steps of :func:`_write_atlas`, with the Euler's-disk helper process running."""
     from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
 
     from . import plotting
     from ._stability import thresholds
     from .animation import animate
     from .regions import STABLE
-
-    files: list[Path] = []
-    dpi = 60 if quick else 90
-    n_map = (60, 50) if quick else (220, 180)
 
     # 1. thresholds ------------------------------------------------------------------
     pr.step("thresholds")
@@ -288,6 +305,16 @@ def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[l
         pr.step("exact motion: quadrature, rosette, backbone")
         motions["exact"] = _exact_section(chosen.stable, out, dpi, files)
         pr.done(f"period {motions['exact']['period']:.6g}")
+        # 9. Euler's disk, run alongside since the start
+        pr.step("Euler's disk (run alongside)")
+        euler.join()
+        if euler.exitcode != 0:
+            raise RuntimeError(f"the Euler's disk process ended with exit code "
+                               f"{euler.exitcode}")
+        motions["euler_disk"] = json.loads((out / "euler_disk.json").read_text())
+        files += [out / "euler_disk.png", out / "euler_disk.json"]
+        ed = motions["euler_disk"]
+        pr.done(f"{ed['end']} at {ed['t_end_s']:.4g} s")
         for proc in helpers:
             proc.join()
             if proc.exitcode != 0:
@@ -299,7 +326,7 @@ def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[l
                 proc.terminate()
                 proc.join()
 
-    # 9. index page ------------------------------------------------------------------------
+    # 10. index page ------------------------------------------------------------------------
     pr.step("index.html")
     (out / "index.html").write_text(_index_html(h, thr, motions, [p.name for p in files]),
                                     encoding="utf-8")
@@ -335,25 +362,52 @@ def _exact_section(motion, out: Path, dpi: int, files: list) -> dict:
 def _start_animation(traj, path, kw):
     """Start :func:`rollingdisk.animation.animate` in a child process (written atomically
     there); returns the process."""
+    return _start_child(_animate_in_child, (traj, path, kw))
+
+
+def _start_child(target, args):
+    """Start ``target(*args)`` in a daemon child process; returns the process."""
     import multiprocessing
 
-    proc = multiprocessing.Process(target=_animate_in_child, args=(traj, path, kw),
-                                   daemon=True)
+    proc = multiprocessing.Process(target=target, args=args, daemon=True)
     proc.start()
     return proc
 
 
-def _animate_in_child(traj, path, kw):
-    """The helper's body. A Ctrl-C or SIGTERM reaches the whole process group: the child
-    ignores SIGINT (the parent stops it) and dies quietly on SIGTERM, so the user sees the
-    parent's one line and never the child's traceback."""
+def _quiet_signals():
+    """In a helper: a Ctrl-C or SIGTERM reaches the whole process group; the child ignores
+    SIGINT (the parent stops it) and dies quietly on SIGTERM, so the user sees the parent's
+    one line and never the child's traceback."""
     import signal
-
-    from .animation import animate
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
+def _animate_in_child(traj, path, kw):
+    """The animation helper's body (see :func:`_quiet_signals`)."""
+    from .animation import animate
+
+    _quiet_signals()
     animate(traj, path, **kw)
+
+
+def _euler_disk_in_child(out: Path, quick: bool, dpi: int):
+    """The Euler's-disk helper's body: the toy run to its end (``quick``: started at
+    ``alpha0 = 0.05``, a short run), ``euler_disk.png`` and ``euler_disk.json`` in ``out``
+    (the atlas's temporary folder; the JSON last, as the sign that both are whole)."""
+    from matplotlib.figure import Figure
+
+    from .euler_disk import EulerDisk, run_euler_disk
+    from .plotting import plot_euler_disk
+
+    _quiet_signals()
+    result = run_euler_disk(EulerDisk(alpha0=0.05 if quick else 0.3), max_wall_time=60.0)
+    fig = Figure(figsize=(10.0, 4.2))
+    plot_euler_disk(result, fig, title="Euler's disk: " + result.message)
+    fig.savefig(out / "euler_disk.png", dpi=dpi)
+    (out / "euler_disk.json").write_text(json.dumps(result.summary(), indent=2,
+                                                    allow_nan=False))
 
 
 def _floats(d):
@@ -397,6 +451,33 @@ def _fmt(x, nd=4):
     if isinstance(x, bool):
         return "yes" if x else "no"
     return f"{x:.{nd}g}"
+
+
+def _euler_block(ed: dict) -> str:
+    """The section "Euler's disk" of the index page, from the run's JSON summary."""
+    p = ed["parameters"]
+    rows = "\n".join(
+        f"<tr><td>{name}</td><td>{_fmt(ed['exponents'][key])}</td>"
+        f"<td>{_fmt(ed['predicted'][key])}</td></tr>"
+        for key, name in (("alpha", "tilt &alpha;"), ("Omega", "precession rate &Omega;"),
+                          ("contact_speed", "contact-point speed")))
+    lo, hi = ed["fit_window_alpha"]
+    return f"""<h2>Euler's disk</h2>
+<p>The commercial toy (radius {p['radius_m'] * 1e3:.4g} mm, thickness
+{p['thickness_m'] * 1e3:.4g} mm, so h = {p['h']:.4g}; mass {p['mass_kg']:.3g} kg) started on
+its spin-in-place steady motion at tilt &alpha;<sub>0</sub> = &pi;/2 &minus; &theta;<sub>0</sub>
+= {p['alpha0']:.3g} rad and run to its end with creep friction (&mu; = {p['mu']:.3g}, creep
+coefficient {p['creep']:.4g}) and rolling resistance (length {p['rolling_resistance']:.3g}
+a); <code>rollingdisk euler-disk</code>, <code>docs/friction.md</code>. End: <b>{ed['end']}</b>
+at t = {_fmt(ed['t_end_s'])} s (status <code>{html.escape(ed['status'])}</code>; the adiabatic
+decay along the steady family predicts {_fmt(ed['predicted_t_end_s'])} s); energy
+balance {_fmt(ed['energy_balance'], 2)}; {ed['n_steps']} steps in {ed['wall_time_s']:.1f} s.
+Exponents against t<sub>0</sub> &minus; t over &alpha; in ({lo:g}, {hi:g}), fitted with
+t<sub>0</sub> = {_fmt(ed['t0_s'])} s, beside those of the adiabatic decay along the steady
+family:</p>
+<table><tr><th>quantity</th><th>fitted</th><th>predicted</th></tr>
+{rows}</table>
+<img src="euler_disk.png" alt="Euler's disk: tilt, precession rate and contact-point speed">"""
 
 
 def _index_html(h: float, thr: dict, motions: dict, names: list) -> str:
@@ -513,6 +594,8 @@ against amplitude, which starts at &varpi; and reaches
 {_fmt(ex['frequency_at_largest'], 5)} at amplitude
 {_fmt(ex['largest_amplitude'], 3)}.</p>
 <img src="exact.png" alt="exact motion: theta over a period, rosette, backbone">
+
+{_euler_block(motions["euler_disk"])}
 
 <h2>Files</h2>
 <p class="note">{" &middot; ".join(f'<a href="{e(n)}">{e(n)}</a>' for n in names)}</p>

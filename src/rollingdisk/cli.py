@@ -1066,6 +1066,115 @@ def _run_sweep(args) -> int:
 
 
 # ---------------------------------------------------------------------------- main
+# ---------------------------------------------------------------------------- euler-disk
+#: Files ``rollingdisk euler-disk --out DIR`` writes (DIR is replaced as a whole).
+EULER_DISK_FILES = ("euler_disk.png", "euler_disk.csv", "euler_disk.json")
+
+
+def _add_euler_disk(sub) -> None:
+    """``rollingdisk euler-disk``: the built-in Euler's disk run to its end (issue 10)."""
+    from .euler_disk import AIR_VISCOSITY, EulerDisk
+
+    toy = EulerDisk()
+    p = sub.add_parser(
+        "euler-disk", help="Euler's disk: the toy spun up and run to its end",
+        description="The commercial Euler's disk (radius 37.5 mm, thickness 12.7 mm, "
+        "0.45 kg) started on its spin-in-place steady motion and run with creep friction "
+        "and rolling resistance (and, with --air, Moffatt's air film) until it falls flat, "
+        "lifts off or comes to rest; exponents near the end fitted and predicted "
+        "(docs/friction.md).")
+    p.add_argument("--out", default=None, metavar="DIR",
+                   help="folder for " + ", ".join(EULER_DISK_FILES) + " (new, empty, or "
+                   "written by this command before: it is replaced as a whole)")
+    p.add_argument("--json", action="store_true", help="print the summary as JSON")
+    p.add_argument("--air", action="store_true",
+                   help=f"Moffatt's air film, air viscosity {AIR_VISCOSITY:g} Pa s")
+    p.add_argument("--quiet", action="store_true", help="no progress bar on stderr")
+    p.add_argument("--mu", type=_real("mu", low=0.0), default=toy.mu,
+                   help=f"friction coefficient at saturation (default {toy.mu:g})")
+    p.add_argument("--creep", type=_real("creep", low=0.0, low_open=True),
+                   default=toy.creep, help=f"creep coefficient k (default {toy.creep:g})")
+    p.add_argument("--rolling-resistance", dest="rolling_resistance",
+                   type=_real("rolling_resistance", low=0.0), default=toy.rolling_resistance,
+                   help=f"rolling-resistance length / a (default {toy.rolling_resistance:g})")
+    p.add_argument("--alpha0", type=_real("alpha0", low=0.0, high=math.pi / 2, low_open=True,
+                                          high_open=True),
+                   default=toy.alpha0, help=f"initial tilt in rad (default {toy.alpha0:g})")
+    p.add_argument("--max-steps", dest="max_steps", type=_positive_int, default=2_000_000,
+                   help="step budget (default 2000000)")
+    p.add_argument("--max-wall-time", dest="max_wall_time",
+                   type=_real("max_wall_time", low=0.0, low_open=True), default=120.0,
+                   help="wall-clock budget in seconds (default 120)")
+    p.set_defaults(handler=_run_euler_disk)
+
+
+def _run_euler_disk(args) -> int:
+    import json
+
+    from .euler_disk import AIR_VISCOSITY, EulerDisk, run_euler_disk
+
+    toy = EulerDisk(mu=args.mu, creep=args.creep, rolling_resistance=args.rolling_resistance,
+                    alpha0=args.alpha0, air_viscosity=AIR_VISCOSITY if args.air else None)
+    if args.out is not None:
+        from ._files import check_replaceable
+
+        check_replaceable(args.out, EULER_DISK_FILES, name="--out")  # before the work
+    bar = None if args.quiet else _ProgressBar(sys.stderr)
+    try:
+        result = run_euler_disk(toy, max_steps=args.max_steps,
+                                max_wall_time=args.max_wall_time, progress=bar)
+    finally:
+        if bar is not None:
+            bar.close()
+    summary = result.summary()
+    if args.out is not None:
+        _write_euler_disk(result, summary, args.out)
+        summary["out"] = args.out
+    if args.json:
+        print(json.dumps(summary, indent=2, allow_nan=False))
+        return 0
+    print(result.message)
+    unit = result.toy.time_unit
+    print(f"  end time       {result.t_end_s:.4g} s  (t = {result.t_end:.6g} sqrt(a/g); "
+          f"adiabatic decay along the steady family: {result.predicted_t_end * unit:.4g} s)")
+    print(f"  fitted t0      {result.t0_s:.4g} s  (alpha -> 0 of the power law; "
+          f"adiabatic: {result.predicted_t0 * unit:.4g} s)")
+    print(f"  exponents      fitted vs predicted, alpha in {result.fit_window}")
+    for name in result.exponents:
+        print(f"    {name:14s} {result.exponents[name]:+.4f}   {result.predicted[name]:+.4f}")
+    print(f"  energy balance {result.energy_balance:.2g}")
+    print(f"  steps          {result.n_steps}")
+    print(f"  wall time      {result.wall_time:.2f} s")
+    if args.out is not None:
+        print(f"  wrote {args.out}")
+    return 0
+
+
+def _write_euler_disk(result, summary, out) -> None:
+    """PNG, CSV and JSON into ``out``, which appears whole or not at all."""
+    import json
+
+    import numpy as np
+
+    from ._files import atomic_dir
+
+    _agg()
+    from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
+
+    from .plotting import plot_euler_disk
+
+    with atomic_dir(out) as tmp:
+        fig = Figure(figsize=(10.0, 4.2))
+        plot_euler_disk(result, fig, title="Euler's disk: " + result.message)
+        fig.savefig(tmp / EULER_DISK_FILES[0], dpi=90)
+        cols = result.as_columns()
+        with open(tmp / EULER_DISK_FILES[1], "w", newline="") as fh:
+            np.savetxt(fh, np.column_stack(list(cols.values())), delimiter=",",
+                       header=",".join(cols), comments="", fmt="%.12g")
+        with open(tmp / EULER_DISK_FILES[2], "w") as fh:
+            json.dump(summary, fh, indent=2, allow_nan=False)
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The parser of the ``rollingdisk`` command line (one subparser per subcommand).
 
@@ -1076,7 +1185,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="rollingdisk", description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     for add in (_add_derive, _add_steady, _add_thresholds, _add_simulate, _add_exact,
-                _add_figures, _add_sweep):
+                _add_figures, _add_sweep, _add_euler_disk):
         add(sub)
     return parser
 
