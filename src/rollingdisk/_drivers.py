@@ -150,6 +150,53 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
                   max_steps, t1, sol=sol)
 
 
+def run_taylor(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_eval,
+               dense_output, events, guards, max_steps, progress, out, finish):
+    """``simulate(method="taylor")``: the compiled Taylor integrator of
+    :mod:`rollingdisk._taylor` (compiled or loaded first, as :func:`jit_compile`), run in
+    chunks of about ``_CHUNK_SECONDS`` so that progress and signals come through."""
+    from . import _simulate, _taylor
+
+    _simulate.jit_compile()
+    core = _simulate._core
+    rough = ground == "rough"
+    use = np.zeros(3, dtype=np.bool_)
+    for g in guards:
+        use[g.index] = True
+    side = 1.0 if y[state_index(ground, "theta")] >= 0 else -1.0
+    atolv = np.broadcast_to(np.asarray(atol, dtype=float), y.shape).copy()
+    finite = atolv[np.isfinite(atolv)]
+    order = _taylor.taylor_order(min(rtol, float(finite.min()) if finite.size else rtol))
+    has_t_eval = t_eval is not None
+    te = t_eval if has_t_eval else np.zeros(1)
+    start = time.perf_counter()
+    n_steps = 0
+    tc, yc = t0, y
+    chunk = 2000
+    later = False
+    while True:
+        te_c = te[np.searchsorted(te, tc, side="right"):] if later and has_t_eval else te
+        w = time.perf_counter()
+        ts_c, ys_c, ns, code, event, tc, yc = _call(
+            core._tay_integrate, rough, disk.h, tc, yc, t1, rtol, atolv, max_step, use, side,
+            te_c, has_t_eval, max_steps - n_steps, chunk, order)
+        w = time.perf_counter() - w
+        if ns > 0:
+            chunk = int(min(max(chunk * _CHUNK_SECONDS / max(w, 1e-6), 10), 1_000_000))
+        n_steps += ns
+        out.add(ts_c[1 if later and not has_t_eval else 0:], ys_c[1 if later and not
+                                                                   has_t_eval else 0:])
+        later = True
+        t_now = float(ts_c[-1]) if event >= 0 and len(ts_c) else tc
+        if progress is not None:
+            progress(float((t_now - t0) / (t1 - t0)))
+        if code != _ev.RUNNING:
+            break
+    wall = time.perf_counter() - start
+    return finish(disk, ground, "taylor", out, code, t_now, n_steps, n_steps, wall,
+                  max_steps, t1, sol=None)
+
+
 class _LazyDense:
     """The dense output of the solver's last step, formed on first use."""
 

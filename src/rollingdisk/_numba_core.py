@@ -21,9 +21,10 @@ import numba
 import numpy as np
 
 from . import _dop853 as _src
+from . import _taylor as _tay
 from . import equations as _eq
 
-_ns = {**_eq.__dict__, **_src.__dict__}
+_ns = {**_eq.__dict__, **_src.__dict__, **_tay.__dict__}
 
 #: The kernels of equations.py, then the integrator of _dop853.py, every one compiled.
 _KERNELS = ("_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs", "_smooth_rhs",
@@ -34,7 +35,12 @@ _INTEGRATOR = ("_rhs", "_rhs_col", "_guards", "_combine", "_step", "_dense_tail"
                "initial_step_v", "_initial_step_scaled", "_side_guards", "_first_fired",
                "_guard_root", "_locate_on_dense", "_needs_sampling", "_mid_guards", "_grow",
                "integrate")
-_DISPATCHERS = _KERNELS + _INTEGRATOR
+#: The Taylor integrator of _taylor.py (``simulate(method="taylor")``).
+_TAYLOR = ("_tay_jet", "_tay_eval", "_tay_step_size", "_tay_locate", "_tay_integrate")
+_DISPATCHERS = _KERNELS + _INTEGRATOR + _TAYLOR
+#: Compiled with fastmath (reassociation: the convolutions of the series vectorize); a
+#: change in the last bits of a coefficient, far below the tolerance that sets the order.
+_FASTMATH = ("_tay_jet",)
 
 
 def _compile(name):
@@ -42,7 +48,7 @@ def _compile(name):
     g = types.FunctionType(f.__code__, _ns, f.__name__, f.__defaults__, f.__closure__)
     g.__qualname__ = f.__qualname__
     g.__module__ = f.__module__
-    d = numba.njit(cache=True)(g)
+    d = numba.njit(cache=True, fastmath=name in _FASTMATH)(g)
     _ns[name] = d  # the others call the compiled version
     return d
 

@@ -47,7 +47,7 @@ DEFAULT_MAX_STEPS = 10_000_000
 #: would decide where any run stops).
 MAX_T = 1e9
 _RTOL_MIN = 100 * np.finfo(float).eps
-_METHODS = ("auto", "dop853", "scipy")
+_METHODS = ("auto", "dop853", "taylor", "scipy")
 _ERROR_CONTROL = ("full", "reduced")
 _CHUNK_SECONDS = 0.05  # wall time of one compiled chunk (interrupts surface between them)
 
@@ -94,6 +94,10 @@ def jit_compile() -> float:
                                guards, 1.0, np.zeros(1), False, 10, 10, keep)
                 core.integrate(rough, 0.1, 0.0, y0, 1e-3, 1e-3, 1e-8, atolv, np.inf, 0.0,
                                guards, 1.0, np.array([5e-4]), True, 10, 10, keep)
+            P = 6  # the Taylor integrator (method="taylor"); the order is a run-time value
+            for te, has in ((np.zeros(1), False), (np.array([5e-4]), True)):
+                core._tay_integrate(rough, 0.1, 0.0, y0, 1e-3, 1e-8, atolv, np.inf, guards,
+                                    1.0, te, has, 10, 10, P)
         if not core.rhs_matches_kernels():  # a stale on-disk cache (see _numba_core)
             core.recompile_all()
             if not core.rhs_matches_kernels():  # pragma: no cover - would be a numba bug
@@ -260,12 +264,15 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
         Initial state, layout of :data:`~rollingdisk.equations.ROUGH_STATE` or
         :data:`~rollingdisk.equations.SMOOTH_STATE`; finite, ``|theta| < pi/2`` and
         ``theta != 0`` if ``h > 0``, energy and rates of change finite.
-    method : {"auto", "dop853", "scipy"}
+    method : {"auto", "dop853", "taylor", "scipy"}
         ``"dop853"``: rollingdisk's DOP853, uncompiled for a short run and compiled (numba)
         once a run has taken ``rollingdisk._jit.PY_BUDGET`` (0.4) s; the same steps either
-        way.  ``"scipy"``: scipy's ``DOP853`` stepped on
-        the numpy right-hand side.  ``"auto"``: ``"dop853"``, or ``"scipy"`` when user
-        ``events`` are given.
+        way.  ``"taylor"``: a compiled Taylor-series method of order
+        ``ceil(-ln(tol)/2) + 1`` (:mod:`rollingdisk._taylor`; fewer, longer steps, about
+        twice as fast as DOP853 at tolerances of 1e-12 and below; compiled on first use,
+        no ``dense_output``, no ``first_step``; ``n_rhs`` counts its series, one per
+        step).  ``"scipy"``: scipy's ``DOP853`` stepped on the numpy right-hand side.
+        ``"auto"``: ``"dop853"``, or ``"scipy"`` when user ``events`` are given.
     rtol : float
         Relative tolerance, in ``[100 eps, 1]``.
     atol : float
@@ -361,13 +368,19 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
         events = None
     if method == "auto":
         method = "scipy" if events is not None else "dop853"
-    if method == "dop853" and events is not None:
-        raise ParameterError("method='dop853' takes no user events; use method='scipy' "
+    if method in ("dop853", "taylor") and events is not None:
+        raise ParameterError(f"method={method!r} takes no user events; use method='scipy' "
                              "(or 'auto') for events")
+    if method == "taylor" and dense_output:
+        raise ParameterError("method='taylor' keeps no dense output; use method='dop853' "
+                             "(or 'auto') with dense_output=True")
+    if method == "taylor" and first_step is not None:
+        raise ParameterError("method='taylor' chooses every step from the series; "
+                             "first_step applies to 'dop853' and 'scipy'")
     use = [g for g in _ev.guard_events(disk, ground, y)] if guards else []
-    from ._drivers import run_compiled, run_scipy
+    from ._drivers import run_compiled, run_scipy, run_taylor
 
-    run = run_scipy if method == "scipy" else run_compiled
+    run = {"scipy": run_scipy, "dop853": run_compiled, "taylor": run_taylor}[method]
     return run(disk, ground, y, t0, t1, rtol=rtol, atol=_atol_vector(ground, atol, error_control),
                max_step=max_step,
                first_step=first_step, t_eval=t_eval, dense_output=bool(dense_output),

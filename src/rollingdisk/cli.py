@@ -339,9 +339,10 @@ def _add_simulate(sub) -> None:
                    help="end time (units sqrt(a/g))")
     p.add_argument("--rtol", type=float, default=None, help="relative tolerance")
     p.add_argument("--atol", type=float, default=None, help="absolute tolerance")
-    p.add_argument("--method", choices=("dop853", "scipy"), default="dop853",
+    p.add_argument("--method", choices=("dop853", "taylor", "scipy"), default="dop853",
                    help="rollingdisk's DOP853 (default; compiled once a run is long enough "
-                   "to be worth it) or scipy's DOP853")
+                   "to be worth it), its Taylor-series method (compiled on first use; "
+                   "fastest at tight tolerances) or scipy's DOP853")
     p.add_argument("--error-control", dest="error_control", choices=("full", "reduced"),
                    default="full", help="tolerances on the whole state (default) or on "
                    "(theta, omega1, omega2, omega3) only, the quadratures X_C, Y_C, psi, phi "

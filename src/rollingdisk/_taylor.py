@@ -1,0 +1,370 @@
+"""A Taylor-series integrator for the equations of motion (``simulate(method="taylor")``).
+
+The reduced system ``(theta, omega1, omega2, omega3)`` (eq. 2 with eq. 38 on rough / eq. 49
+on smooth ground) is polynomial in ``sin theta``, ``cos theta`` and the rates, with one
+quotient (``tan theta``; on smooth ground also the factor ``1/(k1 + y_P^2)``), and
+``X_C, Y_C, psi, phi`` are its quadratures (eqs. 1, 2, 37).  Its Taylor coefficients at a
+point follow from the coefficients of lower order by the classic recurrences of automatic
+differentiation (products are Cauchy convolutions; ``s' = c theta'``, ``c' = -s theta'``;
+quotients by back-substitution), so a step of order p costs O(p^2) arithmetic and two
+sines/cosines, and the order can be high: p = ceil(-ln(tol)/2) + 1 (16 at 1e-14), which
+makes the steps long.  Step size and order follow Jorba & Zou, "A software package for the
+numerical integration of ODEs by means of high-order Taylor methods", Exp. Math. 14 (2005)
+99, as heyoka does: ``rho = min((s/|x^[p-1]|)^(1/(p-1)), (s/|x^[p]|)^(1/p))``, ``dt = rho /
+e^2 exp(-0.7/(p-1))``, ``s`` = 1 under absolute and ``|x|`` under relative control.
+
+The recurrences restate eqs. (1), (2), (37), (38) and (49) term by term (a product of
+series for each product in the kernels of :mod:`rollingdisk.equations`), so
+``tests/test_simulate_taylor.py`` holds them to those kernels: the first coefficient is the
+right-hand side, twice the second its derivative along the flow (a complex step through
+the kernels), the polynomial agrees with a tight ``solve_ivp`` on the numpy right-hand
+side, and whole runs agree with DOP853.
+
+The polynomial of each step is its dense output: guards (lift-off, edge contact, falling
+flat) are sampled inside every step and located on it by regula falsi, output times
+``t_eval`` are evaluated on it.  Functions here are compiled by
+:mod:`rollingdisk._numba_core` (names start with ``_tay``); the module itself needs only
+numpy.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .events import COMPLETED, EDGE_CONTACT, FAILED, FELL_FLAT, LIFT_OFF, RUNNING, STEP_BUDGET
+
+#: Interior fractions of a step at which the guards are sampled.
+_TAY_SAMPLES = 4
+
+
+def taylor_order(tol: float) -> int:
+    """The order of the method for tolerance ``tol``: ``ceil(-ln(tol)/2) + 1`` in [4, 40]."""
+    return int(min(40, max(4, math.ceil(-math.log(tol) / 2.0) + 1)))
+
+
+def _tay_jet(rough, h, y, J, A, P):
+    """Fill ``J[:, 0..P]`` with the Taylor coefficients of the solution through ``y``;
+    ``A`` (at least 19 rows) holds the auxiliary series."""
+    n = y.shape[0]
+    for i in range(n):
+        J[i, 0] = y[i]
+    if rough:
+        ith, iw1, iw2, iw3, ipsi, iphi = 3, 5, 6, 7, 2, 4
+    else:
+        ith, iw1, iw2, iw3, ipsi, iphi = 5, 7, 8, 9, 4, 6
+    ht = h if y[ith] >= 0.0 else -h  # h~ = h sgn(theta), sgn(0) = +1 (eq. 4, _geometry)
+    h2 = h * h
+    S, C, T, Q = A[0], A[1], A[2], A[3]
+    PW3, YP, ZP, SP, CP = A[4], A[5], A[6], A[7], A[8]
+    M1, M2, L, VY, D1 = A[9], A[10], A[11], A[12], A[13]
+    YZ, W11 = A[14], A[15]
+    G, H, VX = A[16], A[17], A[18]
+    th = J[ith]
+    w1 = J[iw1]
+    w2 = J[iw2]
+    w3 = J[iw3]
+    psi = J[ipsi]
+    e1 = 1.0 / (15.0 + 16.0 * h2)
+    e2 = 1.0 / (3.0 + 8.0 * h2)
+    g2 = (2.0 / 3.0) * (3.0 + 4.0 * h2)
+    k1 = 0.25 + h2 / 3.0  # eq. (10)
+    k2 = 0.5
+    for k in range(P):
+        # sin, cos of theta and psi: s' = c theta', c' = -s theta'
+        if k == 0:
+            S[0] = math.sin(th[0])
+            C[0] = math.cos(th[0])
+            SP[0] = math.sin(psi[0])
+            CP[0] = math.cos(psi[0])
+        else:
+            a = 0.0
+            b = 0.0
+            for j in range(1, k + 1):
+                a += j * th[j] * C[k - j]
+                b += j * th[j] * S[k - j]
+            S[k] = a / k
+            C[k] = -b / k
+            if rough:
+                a = 0.0
+                b = 0.0
+                for j in range(1, k + 1):
+                    a += j * psi[j] * CP[k - j]
+                    b += j * psi[j] * SP[k - j]
+                SP[k] = a / k
+                CP[k] = -b / k
+        # tan theta = S/C and psi' = omega3/C (eq. 2)
+        a = S[k]
+        b = w3[k]
+        for j in range(1, k + 1):
+            a -= C[j] * T[k - j]
+            b -= C[j] * Q[k - j]
+        T[k] = a / C[0]
+        Q[k] = b / C[0]
+        a = 0.0
+        for j in range(k + 1):
+            a += T[j] * w3[k - j]
+        PW3[k] = a
+        YP[k] = S[k] - ht * C[k]  # eq. (4)
+        ZP[k] = -(C[k] + ht * S[k])
+        kk = 1.0 / (k + 1)
+        J[ith, k + 1] = w1[k] * kk  # eq. (2)
+        J[ipsi, k + 1] = Q[k] * kk
+        J[iphi, k + 1] = (w2[k] - PW3[k]) * kk
+        if rough:
+            # eq. (38)
+            m1 = 0.0
+            m2 = 0.0
+            for j in range(k + 1):
+                m1 += w2[j] * w3[k - j]
+                m2 += w3[j] * w3[k - j]
+            M1[k] = m1
+            M2[k] = m2
+            L[k] = 12.0 * ht * m1 - (3.0 + 16.0 * h2) * m2
+            G[k] = 4.0 * ht * w2[k] + g2 * w3[k]
+            H[k] = -6.0 * e2 * w2[k] + 4.0 * ht * e2 * w3[k] + PW3[k]
+            VX[k] = w2[k] - ht * w3[k]
+            pl = 0.0
+            d2 = 0.0
+            d3 = 0.0
+            vy = 0.0
+            for j in range(k + 1):
+                pl += T[j] * L[k - j]
+                d2 += G[j] * w1[k - j]
+                d3 += H[j] * w1[k - j]
+                vy += w1[j] * ZP[k - j]
+            VY[k] = vy
+            J[iw1, k + 1] = (18.0 * m1 + pl - 12.0 * ht * m2 + 12.0 * YP[k]) * e1 * kk
+            J[iw2, k + 1] = -d2 * e2 * kk
+            J[iw3, k + 1] = d3 * kk
+            # eqs. (1), (37): v_Cx = omega2 - h~ omega3, v_Cy = omega1 z_P
+            dx = 0.0
+            dy = 0.0
+            for j in range(k + 1):
+                dx += VX[j] * CP[k - j] - VY[j] * SP[k - j]
+                dy += VX[j] * SP[k - j] + VY[j] * CP[k - j]
+            J[0, k + 1] = dx * kk
+            J[1, k + 1] = dy * kk
+        else:
+            # eq. (49): d1 = N / D, N = (k2 w2 - k1 w3 p) w3 + y_P + y_P z_P w1^2,
+            # D = k1 + y_P^2; d3 = (-k2 w2 + k1 w3 p) w1 / k1
+            yz = 0.0
+            ww = 0.0
+            for j in range(k + 1):
+                yz += YP[j] * ZP[k - j]
+                ww += w1[j] * w1[k - j]
+            YZ[k] = yz
+            W11[k] = ww
+            G[k] = k2 * w2[k] - k1 * PW3[k]
+            num = YP[k]
+            den0 = k1
+            dd = 0.0
+            d3 = 0.0
+            for j in range(k + 1):
+                num += G[j] * w3[k - j] + YZ[j] * W11[k - j]
+                d3 -= G[j] * w1[k - j]
+            # D_j = k1 delta_j0 + (y_P^2)_j; quotient by back-substitution
+            for j in range(1, k + 1):
+                yy = 0.0
+                for i in range(j + 1):
+                    yy += YP[i] * YP[j - i]
+                dd += yy * D1[k - j]
+            yy0 = YP[0] * YP[0]
+            D1[k] = (num - dd) / (den0 + yy0)
+            J[iw1, k + 1] = D1[k] * kk
+            J[iw2, k + 1] = 0.0
+            J[iw3, k + 1] = d3 / k1 * kk
+            J[0, k + 1] = J[2, k] * kk  # X_C' = V_X, V' = 0 (eq. 8 with F_x = F_y = 0)
+            J[1, k + 1] = J[3, k] * kk
+            J[2, k + 1] = 0.0
+            J[3, k + 1] = 0.0
+
+
+def _tay_eval(J, P, dt, out):
+    """out = the Taylor polynomial of every component at ``dt`` (Horner)."""
+    for i in range(J.shape[0]):
+        acc = J[i, P]
+        for k in range(P - 1, -1, -1):
+            acc = acc * dt + J[i, k]
+        out[i] = acc
+
+
+def _tay_step_size(J, P, atolv, rtol):
+    """Jorba & Zou's step size, per component: ``rho / e^2 exp(-0.7/(P-1))`` with ``rho``
+    the least over the controlled components (finite ``atolv``) of ``(s_i/|x_i^[P-1]|)^(1/
+    (P-1))`` and ``(s_i/|x_i^[P]|)^(1/P)``; ``s_i = 1`` under absolute control (``rtol |x_i|
+    <= atol_i``), else ``|x_i|`` (the tolerance enters through the order P).  Per component
+    rather than Jorba & Zou's one norm: a growing quadrature (psi, phi) must not loosen the
+    control of theta."""
+    rho = np.inf
+    e1 = 1.0 / (P - 1)
+    e2 = 1.0 / P
+    for i in range(J.shape[0]):
+        if math.isfinite(atolv[i]):
+            x = abs(J[i, 0])
+            scale = 1.0 if rtol * x <= atolv[i] else x
+            a = abs(J[i, P - 1])
+            b = abs(J[i, P])
+            if a > 0.0:
+                rho = min(rho, (scale / a) ** e1)
+            if b > 0.0:
+                rho = min(rho, (scale / b) ** e2)
+    return rho * math.exp(-2.0 - 0.7 / (P - 1))
+
+
+def _tay_locate(rough, h, J, P, side, kg, xa, xb, ga, gb, ytmp, g):
+    """Regula falsi (Illinois) on the step polynomial for the root of guard ``kg`` in
+    (xa, xb] (times from the step start), positive at xa, not positive at xb; returns the
+    last admissible time (within round-off of the root)."""
+    side_flag = 0
+    for _ in range(200):
+        if xb - xa <= 4e-16 * max(1.0, xb):
+            break
+        xc = (xa * gb - xb * ga) / (gb - ga)
+        if not (xa < xc < xb):
+            xc = 0.5 * (xa + xb)
+        _tay_eval(J, P, xc, ytmp)
+        _side_guards(rough, h, ytmp, side, g)  # noqa: F821 - bound by _numba_core
+        gc = g[kg]
+        if gc > 0.0:
+            xa, ga = xc, gc
+            if side_flag == -1:
+                gb *= 0.5
+            side_flag = -1
+        else:
+            xb, gb = xc, gc
+            if side_flag == 1:
+                ga *= 0.5
+            side_flag = 1
+    return xa
+
+
+def _tay_integrate(rough, h, t0, y0, t_end, rtol, atolv, max_step, use_guards, side, t_eval,
+                   has_t_eval, max_steps, chunk_steps, P):
+    """Integrate from (t0, y0) towards t_end with the Taylor method of order P.
+
+    Pauses (status RUNNING) after ``chunk_steps`` steps; a continued run takes the same
+    steps (the step size depends on the state only).  ``atolv``: the absolute tolerance
+    per component (``inf``: left out of the error control).  Returns ``(ts, ys, n_steps,
+    status, event, t_last, y_last)``: the step ends (or the values at ``t_eval``) and the
+    event point if a guard fired, the status, the guard that fired or -1, the end of the
+    last step and the state there.
+    """
+    n = y0.shape[0]
+    J = np.zeros((n, P + 1))
+    A = np.zeros((19, P + 1))
+    y = y0.copy()
+    y_new = np.empty(n)
+    ytmp = np.empty(n)
+    g_a = np.empty(3)
+    g_b = np.empty(3)
+    g_m = np.empty(3)
+    any_guard = use_guards[0] or use_guards[1] or use_guards[2]
+    cap = 1024
+    ts = np.empty(cap)
+    ys = np.empty((cap, n))
+    m = 0
+    ie = 0
+    t = t0
+    if not has_t_eval:
+        ts[0] = t0
+        ys[0] = y
+        m = 1
+    else:
+        while ie < t_eval.shape[0] and t_eval[ie] <= t0:
+            if m == cap:
+                ts, ys, cap = _grow(ts, ys, m)  # noqa: F821 - bound by _numba_core
+            ts[m] = t0
+            ys[m] = y
+            m += 1
+            ie += 1
+    status = RUNNING
+    event = -1
+    n_steps = 0
+    taken = 0
+    _side_guards(rough, h, y, side, g_a)  # noqa: F821
+    if any_guard:  # a guard already violated at the start
+        k0 = _first_fired(g_a, use_guards)  # noqa: F821
+        if k0 == 0 or k0 == 2:
+            if m == 0:
+                ts[0] = t
+                ys[0] = y
+                m = 1
+            return ts[:m], ys[:m], 0, LIFT_OFF if k0 == 0 else FELL_FLAT, k0, t, y
+    while True:
+        if t >= t_end:
+            status = COMPLETED
+            break
+        if n_steps >= max_steps:
+            status = STEP_BUDGET
+            break
+        if taken >= chunk_steps:
+            break
+        _tay_jet(rough, h, y, J, A, P)
+        dt = _tay_step_size(J, P, atolv, rtol)
+        dt = min(dt, max_step)
+        last = False
+        if t + dt >= t_end:
+            dt = t_end - t
+            last = True
+        if not (dt > 1e-15 * max(1.0, abs(t))) or not math.isfinite(dt):
+            status = FAILED
+            break
+        _tay_eval(J, P, dt, y_new)
+        fired = -1
+        x_hit = dt
+        if any_guard:
+            # the guards at the step's start (kept from the last step), middle and end; the
+            # step is sampled only where one may reach 0 (the rule of _needs_sampling)
+            _tay_eval(J, P, 0.5 * dt, ytmp)
+            _side_guards(rough, h, ytmp, side, g_m)  # noqa: F821 - bound by _numba_core
+            _side_guards(rough, h, y_new, side, g_b)  # noqa: F821
+            if _needs_sampling(g_a, g_m, g_b, use_guards):  # noqa: F821
+                xa = 0.0
+                for js in range(1, _TAY_SAMPLES + 2):
+                    xb = dt * js / (_TAY_SAMPLES + 1)
+                    if js == _TAY_SAMPLES + 1:
+                        xb = dt
+                    _tay_eval(J, P, xb, ytmp)
+                    _side_guards(rough, h, ytmp, side, g_b)  # noqa: F821
+                    fired = _first_fired(g_b, use_guards)  # noqa: F821
+                    if fired >= 0:
+                        x_hit = _tay_locate(rough, h, J, P, side, fired, xa, xb, g_a[fired],
+                                            g_b[fired], ytmp, g_m)
+                        _tay_eval(J, P, x_hit, y_new)
+                        break
+                    xa = xb
+                    for q in range(3):
+                        g_a[q] = g_b[q]
+            for q in range(3):
+                g_a[q] = g_b[q]
+        t_new = t + x_hit if fired >= 0 else (t_end if last else t + dt)
+        if has_t_eval:
+            while ie < t_eval.shape[0] and t_eval[ie] <= t_new:
+                if m == cap:
+                    ts, ys, cap = _grow(ts, ys, m)  # noqa: F821
+                _tay_eval(J, P, t_eval[ie] - t, ytmp)
+                ts[m] = t_eval[ie]
+                ys[m] = ytmp
+                m += 1
+                ie += 1
+        if not has_t_eval or fired >= 0:
+            if m == cap:
+                ts, ys, cap = _grow(ts, ys, m)  # noqa: F821
+            ts[m] = t_new
+            ys[m] = y_new
+            m += 1
+        n_steps += 1
+        taken += 1
+        t = t_new
+        for i in range(n):
+            y[i] = y_new[i]
+        if fired >= 0:
+            status = LIFT_OFF if fired == 0 else (EDGE_CONTACT if fired == 1 else FELL_FLAT)
+            event = fired
+            break
+        if last:
+            status = COMPLETED
+            break
+    return ts[:m], ys[:m], n_steps, status, event, t, y
