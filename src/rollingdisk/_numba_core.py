@@ -38,9 +38,6 @@ _INTEGRATOR = ("_rhs", "_rhs_col", "_guards", "_combine", "_step", "_dense_tail"
 #: The Taylor integrator of _taylor.py (``simulate(method="taylor")``).
 _TAYLOR = ("_tay_jet", "_tay_eval", "_tay_step_size", "_tay_locate", "_tay_integrate")
 _DISPATCHERS = _KERNELS + _INTEGRATOR + _TAYLOR
-#: Compiled with fastmath (reassociation: the convolutions of the series vectorize); a
-#: change in the last bits of a coefficient, far below the tolerance that sets the order.
-_FASTMATH = ("_tay_jet",)
 
 
 def _compile(name):
@@ -48,7 +45,7 @@ def _compile(name):
     g = types.FunctionType(f.__code__, _ns, f.__name__, f.__defaults__, f.__closure__)
     g.__qualname__ = f.__qualname__
     g.__module__ = f.__module__
-    d = numba.njit(cache=True, fastmath=name in _FASTMATH)(g)
+    d = numba.njit(cache=True)(g)
     _ns[name] = d  # the others call the compiled version
     return d
 
