@@ -36,7 +36,8 @@ _INTEGRATOR = ("_rhs", "_rhs_col", "_guards", "_combine", "_step", "_dense_tail"
                "_guard_root", "_locate_on_dense", "_needs_sampling", "_mid_guards", "_grow",
                "integrate")
 #: The Taylor integrator of _taylor.py (``simulate(method="taylor")``).
-_TAYLOR = ("_tay_jet", "_tay_eval", "_tay_step_size", "_tay_locate", "_tay_integrate")
+_TAYLOR = ("_tay_jet_rough", "_tay_jet", "_tay_eval", "_tay_step_size", "_tay_locate",
+           "_tay_integrate")
 _DISPATCHERS = _KERNELS + _INTEGRATOR + _TAYLOR
 
 

@@ -44,9 +44,127 @@ def taylor_order(tol: float) -> int:
     return int(min(40, max(4, math.ceil(-math.log(tol) / 2.0) + 1)))
 
 
+def _tay_jet_rough(h, y, J, A, P):
+    """:func:`_tay_jet` on rough ground (eqs. 1, 2, 37, 38), the convolutions fused.
+
+    The same recurrences as the general branch, but at order k every convolution is split
+    into its interior terms (indices 1..k-1 on both sides, all known from lower orders),
+    summed in one loop with 17 independent accumulators, and its two end terms (index 0
+    or k), added once the order-k values they need exist.  One loop of independent sums
+    instead of seven dependent ones: the step is bound by throughput, not by the latency
+    of each running sum.  ``k theta_k = omega1_{k-1}`` and ``k psi_k = (omega3/c)_{k-1}``
+    (eq. 2) replace the derivatives of the series of theta and psi.
+    """
+    for i in range(y.shape[0]):
+        J[i, 0] = y[i]
+    ht = h if y[3] >= 0.0 else -h  # h~ = h sgn(theta), sgn(0) = +1 (eq. 4, _geometry)
+    h2 = h * h
+    S, C, T, Q = A[0], A[1], A[2], A[3]
+    PW3, ZP, SP, CP = A[4], A[6], A[7], A[8]
+    L, VY, G, H, VX = A[11], A[12], A[16], A[17], A[18]
+    w1 = J[5]
+    w2 = J[6]
+    w3 = J[7]
+    e1 = 1.0 / (15.0 + 16.0 * h2)
+    e2 = 1.0 / (3.0 + 8.0 * h2)
+    g2 = (2.0 / 3.0) * (3.0 + 4.0 * h2)
+    cl = 3.0 + 16.0 * h2
+    for k in range(P):
+        s_ = 0.0
+        c_ = 0.0
+        sp = 0.0
+        cp = 0.0
+        t_ = 0.0
+        q_ = 0.0
+        pw = 0.0
+        m1 = 0.0
+        m2 = 0.0
+        pl = 0.0
+        d2 = 0.0
+        d3 = 0.0
+        vy = 0.0
+        dx = 0.0
+        dy = 0.0
+        for j in range(1, k):
+            i = k - j
+            dth = w1[j - 1]  # j theta_j
+            dps = Q[j - 1]  # j psi_j
+            s_ += dth * C[i]
+            c_ += dth * S[i]
+            sp += dps * CP[i]
+            cp += dps * SP[i]
+            t_ += C[j] * T[i]
+            q_ += C[j] * Q[i]
+            pw += T[j] * w3[i]
+            m1 += w2[j] * w3[i]
+            m2 += w3[j] * w3[i]
+            pl += T[j] * L[i]
+            d2 += G[j] * w1[i]
+            d3 += H[j] * w1[i]
+            vy += w1[j] * ZP[i]
+            dx += VX[j] * CP[i] - VY[j] * SP[i]
+            dy += VX[j] * SP[i] + VY[j] * CP[i]
+        if k == 0:
+            S[0] = math.sin(y[3])
+            C[0] = math.cos(y[3])
+            SP[0] = math.sin(y[2])
+            CP[0] = math.cos(y[2])
+            T[0] = S[0] / C[0]
+            Q[0] = w3[0] / C[0]
+            PW3[0] = T[0] * w3[0]
+            m1 = w2[0] * w3[0]
+            m2 = w3[0] * w3[0]
+        else:
+            # s' = c theta', c' = -s theta' (and of psi); tan theta = s/c, psi' = omega3/c
+            dth = w1[k - 1]
+            dps = Q[k - 1]
+            S[k] = (s_ + dth * C[0]) / k
+            C[k] = -(c_ + dth * S[0]) / k
+            SP[k] = (sp + dps * CP[0]) / k
+            CP[k] = -(cp + dps * SP[0]) / k
+            T[k] = (S[k] - t_ - C[k] * T[0]) / C[0]
+            Q[k] = (w3[k] - q_ - C[k] * Q[0]) / C[0]
+            PW3[k] = pw + T[0] * w3[k] + T[k] * w3[0]
+            m1 += w2[0] * w3[k] + w2[k] * w3[0]
+            m2 += 2.0 * w3[0] * w3[k]
+        L[k] = 12.0 * ht * m1 - cl * m2
+        G[k] = 4.0 * ht * w2[k] + g2 * w3[k]
+        H[k] = -6.0 * e2 * w2[k] + 4.0 * ht * e2 * w3[k] + PW3[k]
+        VX[k] = w2[k] - ht * w3[k]  # eqs. (1), (37): v_Cx = omega2 - h~ omega3
+        yp = S[k] - ht * C[k]  # eq. (4)
+        ZP[k] = -(C[k] + ht * S[k])
+        if k == 0:
+            pl = T[0] * L[0]
+            d2 = G[0] * w1[0]
+            d3 = H[0] * w1[0]
+            VY[0] = w1[0] * ZP[0]  # v_Cy = omega1 z_P
+            dx = VX[0] * CP[0] - VY[0] * SP[0]
+            dy = VX[0] * SP[0] + VY[0] * CP[0]
+        else:
+            pl += T[0] * L[k] + T[k] * L[0]
+            d2 += G[0] * w1[k] + G[k] * w1[0]
+            d3 += H[0] * w1[k] + H[k] * w1[0]
+            VY[k] = vy + w1[0] * ZP[k] + w1[k] * ZP[0]
+            dx += (VX[0] * CP[k] - VY[0] * SP[k]) + (VX[k] * CP[0] - VY[k] * SP[0])
+            dy += (VX[0] * SP[k] + VY[0] * CP[k]) + (VX[k] * SP[0] + VY[k] * CP[0])
+        kk = 1.0 / (k + 1)
+        J[3, k + 1] = w1[k] * kk  # eq. (2)
+        J[2, k + 1] = Q[k] * kk
+        J[4, k + 1] = (w2[k] - PW3[k]) * kk
+        # eq. (38)
+        J[5, k + 1] = (18.0 * m1 + pl - 12.0 * ht * m2 + 12.0 * yp) * e1 * kk
+        J[6, k + 1] = -d2 * e2 * kk
+        J[7, k + 1] = d3 * kk
+        J[0, k + 1] = dx * kk
+        J[1, k + 1] = dy * kk
+
+
 def _tay_jet(rough, h, y, J, A, P):
     """Fill ``J[:, 0..P]`` with the Taylor coefficients of the solution through ``y``;
     ``A`` (at least 19 rows) holds the auxiliary series."""
+    if rough:
+        _tay_jet_rough(h, y, J, A, P)
+        return
     n = y.shape[0]
     for i in range(n):
         J[i, 0] = y[i]
