@@ -300,34 +300,37 @@ def _tay_jet(rough, h, y, J, A, P):
 
 
 def _tay_eval(J, P, dt, out):
-    """out = the Taylor polynomial of every component at ``dt`` (Horner)."""
-    for i in range(J.shape[0]):
-        acc = J[i, P]
-        for k in range(P - 1, -1, -1):
-            acc = acc * dt + J[i, k]
-        out[i] = acc
+    """out = the Taylor polynomial of every component at ``dt`` (Horner, the components
+    interleaved: independent chains rather than one long dependent one at a time)."""
+    n = J.shape[0]
+    for i in range(n):
+        out[i] = J[i, P]
+    for k in range(P - 1, -1, -1):
+        for i in range(n):
+            out[i] = out[i] * dt + J[i, k]
 
 
 def _tay_step_size(J, P, atolv, rtol):
-    """Jorba & Zou's step size, per component: ``rho / e^2 exp(-0.7/(P-1))`` with ``rho``
-    the least over the controlled components (finite ``atolv``) of ``(s_i/|x_i^[P-1]|)^(1/
-    (P-1))`` and ``(s_i/|x_i^[P]|)^(1/P)``; ``s_i = 1`` under absolute control (``rtol |x_i|
-    <= atol_i``), else ``|x_i|`` (the tolerance enters through the order P).  Per component
-    rather than Jorba & Zou's one norm: a growing quadrature (psi, phi) must not loosen the
-    control of theta."""
-    rho = np.inf
-    e1 = 1.0 / (P - 1)
-    e2 = 1.0 / P
+    """Jorba & Zou's step size, as heyoka: ``rho / e^2 exp(-0.7/(P-1))`` with ``rho =
+    min((s/||x^[P-1]||)^(1/(P-1)), (s/||x^[P]||)^(1/P))``, the norms (max) over the
+    controlled components (finite ``atolv``); ``s = 1`` under absolute control (``rtol
+    ||x|| <= min atol``), else ``||x||`` (the tolerance enters through the order P)."""
+    xm = 0.0
+    am = 0.0
+    bm = 0.0
+    at = np.inf
     for i in range(J.shape[0]):
         if math.isfinite(atolv[i]):
-            x = abs(J[i, 0])
-            scale = 1.0 if rtol * x <= atolv[i] else x
-            a = abs(J[i, P - 1])
-            b = abs(J[i, P])
-            if a > 0.0:
-                rho = min(rho, (scale / a) ** e1)
-            if b > 0.0:
-                rho = min(rho, (scale / b) ** e2)
+            xm = max(xm, abs(J[i, 0]))
+            am = max(am, abs(J[i, P - 1]))
+            bm = max(bm, abs(J[i, P]))
+            at = min(at, atolv[i])
+    scale = 1.0 if rtol * xm <= at else xm
+    rho = np.inf
+    if am > 0.0:
+        rho = (scale / am) ** (1.0 / (P - 1))
+    if bm > 0.0:
+        rho = min(rho, (scale / bm) ** (1.0 / P))
     return rho * math.exp(-2.0 - 0.7 / (P - 1))
 
 
