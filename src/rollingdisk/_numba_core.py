@@ -39,6 +39,11 @@ _INTEGRATOR = ("_rhs", "_rhs_col", "_guards", "_combine", "_step", "_dense_tail"
 _TAYLOR = ("_tay_jet_rough", "_tay_jet", "_tay_eval", "_tay_step_size", "_tay_locate",
            "_tay_integrate")
 _DISPATCHERS = _KERNELS + _INTEGRATOR + _TAYLOR
+#: The Taylor jet and its Horner evaluation: multiply-adds fused (``contract``: one rounding
+#: instead of two, the order of every sum kept, no reassociation) and numpy's error model
+#: (a quotient by cos theta = 0 gives inf, which fails the step size, instead of a branch
+#: raising ZeroDivisionError on every division): the jet 0.97 -> 0.71 ms per 1860 calls.
+_CONTRACT = ("_tay_jet_rough", "_tay_jet", "_tay_eval")
 
 
 def _compile(name):
@@ -46,7 +51,10 @@ def _compile(name):
     g = types.FunctionType(f.__code__, _ns, f.__name__, f.__defaults__, f.__closure__)
     g.__qualname__ = f.__qualname__
     g.__module__ = f.__module__
-    d = numba.njit(cache=True)(g)
+    if name in _CONTRACT:
+        d = numba.njit(cache=True, fastmath={"contract"}, error_model="numpy")(g)
+    else:
+        d = numba.njit(cache=True)(g)
     _ns[name] = d  # the others call the compiled version
     return d
 
