@@ -326,12 +326,13 @@ def _tay_step_size(J, P, atolv, rtol):
             bm = max(bm, abs(J[i, P]))
             at = min(at, atolv[i])
     scale = 1.0 if rtol * xm <= at else xm
-    rho = np.inf
+    # in logarithms: two logs and one exp instead of two powers and an exp
+    lr = np.inf
     if am > 0.0:
-        rho = (scale / am) ** (1.0 / (P - 1))
+        lr = math.log(scale / am) / (P - 1)
     if bm > 0.0:
-        rho = min(rho, (scale / bm) ** (1.0 / P))
-    return rho * math.exp(-2.0 - 0.7 / (P - 1))
+        lr = min(lr, math.log(scale / bm) / P)
+    return math.exp(lr - 2.0 - 0.7 / (P - 1))
 
 
 def _tay_locate(rough, h, J, P, side, kg, xa, xb, ga, gb, ytmp, g):
