@@ -310,6 +310,19 @@ def _tay_eval(J, P, dt, out):
             out[i] = out[i] * dt + J[i, k]
 
 
+def _tay_eval_reduced(rough, J, P, dt, r):
+    """r = ``(theta, omega1, omega2, omega3)`` of the Taylor polynomial at ``dt`` (Horner):
+    all the guards need (:func:`rollingdisk.equations._reduced_state` takes a 4-vector)."""
+    i0 = 3 if rough else 5
+    r[0] = J[i0, P]
+    for i in range(1, 4):
+        r[i] = J[i0 + 1 + i, P]
+    for k in range(P - 1, -1, -1):
+        r[0] = r[0] * dt + J[i0, k]
+        for i in range(1, 4):
+            r[i] = r[i] * dt + J[i0 + 1 + i, k]
+
+
 def _tay_step_size(J, P, atolv, rtol):
     """Jorba & Zou's step size, as heyoka: ``rho / e^2 exp(-0.7/(P-1))`` with ``rho =
     min((s/||x^[P-1]||)^(1/(P-1)), (s/||x^[P]||)^(1/P))``, the norms (max) over the
@@ -379,6 +392,7 @@ def _tay_integrate(rough, h, t0, y0, t_end, rtol, atolv, max_step, use_guards, s
     y = y0.copy()
     y_new = np.empty(n)
     ytmp = np.empty(n)
+    r4 = np.empty(4)
     g_a = np.empty(3)
     g_b = np.empty(3)
     g_m = np.empty(3)
@@ -439,8 +453,8 @@ def _tay_integrate(rough, h, t0, y0, t_end, rtol, atolv, max_step, use_guards, s
         if any_guard:
             # the guards at the step's start (kept from the last step), middle and end; the
             # step is sampled only where one may reach 0 (the rule of _needs_sampling)
-            _tay_eval(J, P, 0.5 * dt, ytmp)
-            _side_guards(rough, h, ytmp, side, g_m)  # noqa: F821 - bound by _numba_core
+            _tay_eval_reduced(rough, J, P, 0.5 * dt, r4)
+            _side_guards(rough, h, r4, side, g_m)  # noqa: F821 - bound by _numba_core
             _side_guards(rough, h, y_new, side, g_b)  # noqa: F821
             if _needs_sampling(g_a, g_m, g_b, use_guards):  # noqa: F821
                 xa = 0.0
