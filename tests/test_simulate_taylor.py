@@ -179,3 +179,45 @@ def test_cli_method_taylor(capsys):
     assert rec["energy_drift"] < 1e-12
     # the measured frequency is the closed form's varpi (eq. 40) at small amplitude
     assert abs(rec["theta_frequency"] - rec["varpi"]) < 1e-3 * rec["varpi"]
+
+
+def _heyoka_rough_system(h):
+    """heyoka's ODE from the kernels of rollingdisk.equations (their ``np`` bound to
+    heyoka's sin/cos; ``sgn(theta) = 1``: the run below stays at theta > 0)."""
+    import types
+
+    import heyoka as hy
+
+    from rollingdisk import equations as eq
+
+    class HeyokaNp:
+        sin = staticmethod(hy.sin)
+        cos = staticmethod(hy.cos)
+        sign = staticmethod(lambda x: 1.0)
+        real = staticmethod(lambda x: x)
+
+    ns = dict(eq.__dict__, np=HeyokaNp())
+    for name in ("_geometry", "_rough_omega_dot", "_rough_rhs"):
+        f = eq.__dict__[name]
+        ns[name] = types.FunctionType(f.__code__, ns, name)
+    xs = hy.make_vars(*eq.ROUGH_STATE)
+    return list(zip(xs, ns["_rough_rhs"](h, xs)))
+
+
+@pytest.mark.parametrize("tol", [1e-12])
+def test_full_control_takes_heyokas_steps(tol):
+    """The step-size rule is heyoka's (Jorba & Zou, norms over all components): with
+    ``error_control="full"`` the run takes heyoka's number of steps on the benchmark's
+    near-steady circle (an independent implementation of the same rule and order)."""
+    hy = pytest.importorskip("heyoka")
+    disk = Disk(h=0.1)
+    y0 = np.array([0.0, 0.0, 0.0, 0.3001, 0.0, 0.0, 0.0, 3.0])
+    a = rd.omega_dot(disk, "rough", 0.3, 0.0, 0.0, 3.0)[0]
+    b = rd.omega_dot(disk, "rough", 0.3, 0.0, 1.0, 3.0)[0]
+    y0[6] = -a / (b - a)
+    ta = hy.taylor_adaptive(_heyoka_rough_system(disk.h), y0, tol=tol)
+    n_hy = ta.propagate_until(200.0)[3]
+    tr = simulate(disk, "rough", (0.0, 200.0), y0, rtol=tol, atol=tol, method="taylor",
+                  error_control="full")
+    assert tr.status == "completed"
+    assert abs(tr.n_steps - n_hy) <= max(2, 0.01 * n_hy)
