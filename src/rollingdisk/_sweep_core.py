@@ -27,6 +27,12 @@ from ._numba_core import (
     _reduced_rhs,
     _rhs,
     _step_factor,
+    _tay_jet4_rough,
+    _tay_jet4_smooth,
+    _tay_normal,
+    _tay_poly_root,
+    _tay_sample,
+    _tay_step_size,
     initial_step,
 )
 
@@ -42,11 +48,13 @@ NCOL = len(COLUMNS)
 
 
 @numba.njit(cache=True)
-def _reduced_energy(rough, h, k1, k2, y):
-    """E of the reduced state (eqs. 13, 37, 7); on smooth ground the part of E that does not
-    contain the constant V_X, V_Y (conserved by itself)."""
-    theta, w1, w2, w3 = y[0], y[1], y[2], y[3]
-    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+def _energy_sc(rough, ht, k1, k2, s, c, y):
+    """E of the reduced state ``y`` with ``sin theta = s``, ``cos theta = c`` given (eqs. 13,
+    37, 7; a = 1); on smooth ground the part of E that does not contain the constant
+    V_X, V_Y (conserved by itself)."""
+    w1, w2, w3 = y[1], y[2], y[3]
+    y_P = s - ht * c  # eq. (4)
+    z_P = -(c + ht * s)
     v_Cz = -w1 * y_P  # eq. (7)
     if rough:
         v_Cx = w2 - ht * w3  # eq. (37)
@@ -55,6 +63,13 @@ def _reduced_energy(rough, h, k1, k2, y):
     else:
         kin = 0.5 * v_Cz * v_Cz
     return kin + 0.5 * k1 * (w1 * w1 + w3 * w3) + 0.5 * k2 * w2 * w2 - z_P
+
+
+@numba.njit(cache=True)
+def _reduced_energy(rough, h, k1, k2, y):
+    """E of the reduced state (:func:`_energy_sc`)."""
+    ht, s, c, p, y_P, z_P = _geometry(h, y[0])
+    return _energy_sc(rough, ht, k1, k2, s, c, y)
 
 
 @numba.njit(cache=True)
@@ -259,4 +274,172 @@ def run_batch(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol
     for i in numba.prange(n):
         _one(rough, h[i], k1[i], k2[i], x0[i], theta_ref[i], a0[i], grow_lo, grow_hi, t_end,
              rtol, atol, max_steps, out[i])
+    return out
+
+
+# ------------------------------------------------------------------ the Taylor method
+#: Points per step (fractions m / _SAMPLES, m = 1.._SAMPLES) at which the state and F_z are
+#: evaluated on the step polynomial: summaries and guards see inside every step.  A step
+#: of order P ~ 12 spans about a tenth of an oscillation (the radius of convergence of
+#: sin(varpi t) over e^2), so the midpoint and the end suffice.
+_SAMPLES = 2
+
+
+@numba.njit(cache=True)
+def _one_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atolv,
+                max_steps, P, out):
+    """One trajectory by the Taylor method of :mod:`rollingdisk._taylor` (order P, step
+    size of Jorba & Zou); the summaries of :func:`_one`, taken on the step polynomials.
+
+    Every step is sampled at ``_SAMPLES`` points (:func:`rollingdisk._taylor._tay_sample`):
+    theta (crossings, thresholds, max |theta - theta0|, edge contact, falling flat) and F_z
+    (lift-off).  Crossings, threshold times and guard events are located on the
+    polynomial (regula falsi; for F_z on its series, :func:`rollingdisk._taylor._tay_normal`),
+    so a guard ends the run where it fires, not at the end of a step.  The energy is taken
+    at every step's start (sin and cos theta come with the jet) and at the end.
+    """
+    J = np.zeros((4, P + 1))
+    A = np.zeros((14, P + 1))
+    N = np.zeros(P + 1)
+    y = x0.copy()
+    v = np.empty(5)
+    t = 0.0
+    side = 1.0 if y[0] >= 0.0 else -1.0
+    ht = h * side
+    max_d = abs(y[0] - theta_ref)
+    t_lo = np.nan
+    t_hi = np.nan
+    nc = 0
+    sk = 0.0
+    st = 0.0
+    skk = 0.0
+    skt = 0.0
+    e_drift = 0.0
+    status = 0
+    n_steps = 0
+    E0 = 0.0
+    half_pi = 0.5 * np.pi
+    edge = h > 0.0
+    n_a = 0.0
+    while status == 0:
+        if rough:
+            _tay_jet4_rough(h, y, J, A, P)
+        else:
+            _tay_jet4_smooth(h, y, J, A, P)
+        E = _energy_sc(rough, ht, k1, k2, A[0, 0], A[1, 0], y)
+        if n_steps == 0:
+            E0 = E
+            _tay_sample(h, J, A, P, 0.0, v)
+            n_a = v[4]
+            if n_a <= 0.0:
+                status = LIFT_OFF
+                break
+            if half_pi - abs(y[0]) <= 0.0:
+                status = FELL_FLAT
+                break
+        de = abs(E - E0) / max(abs(E0), 1e-300)
+        if de > e_drift:
+            e_drift = de
+        if t >= t_end:
+            status = COMPLETED
+            break
+        if n_steps >= max_steps:
+            status = FAILED
+            break
+        dt = _tay_step_size(J, P, atolv, rtol)
+        last = False
+        if t + dt >= t_end:
+            dt = t_end - t
+            last = True
+        if not (dt > 1e-15 * max(1.0, t)) or not np.isfinite(dt):
+            status = FAILED
+            break
+        xa = 0.0
+        th_a = y[0]
+        da = th_a - theta_ref
+        for m in range(1, _SAMPLES + 1):
+            xb = dt * m / _SAMPLES if m < _SAMPLES else dt
+            _tay_sample(h, J, A, P, xb, v)
+            th_b = v[0]
+            n_b = v[4]
+            # guards (an edge contact first, as rollingdisk._dop853._first_fired)
+            fired = 0
+            if edge and th_b * side <= 0.0:
+                xb = _tay_poly_root(J[0], P, side, 0.0, xa, xb, th_a * side, th_b * side)
+                fired = EDGE_CONTACT
+            elif n_b <= 0.0:
+                _tay_normal(h, J, A, P, N)
+                xb = _tay_poly_root(N, P - 1, 1.0, 0.0, xa, xb, n_a, n_b)
+                fired = LIFT_OFF
+            elif half_pi - abs(th_b) <= 0.0:
+                sg = 1.0 if th_b >= 0.0 else -1.0
+                xb = _tay_poly_root(J[0], P, -sg, -half_pi, xa, xb, half_pi - abs(th_a),
+                                    half_pi - abs(th_b))
+                fired = FELL_FLAT
+            if fired != 0:
+                _tay_sample(h, J, A, P, xb, v)
+                th_b = v[0]
+            db = th_b - theta_ref
+            # summaries on (xa, xb]
+            if da < 0.0 <= db:
+                tc = t + _tay_poly_root(J[0], P, 1.0, theta_ref, xa, xb, da, db)
+                sk += nc
+                st += tc
+                skk += nc * nc
+                skt += nc * tc
+                nc += 1
+            ad = abs(db)
+            if ad > max_d:
+                max_d = ad
+            sg = 1.0 if db >= 0.0 else -1.0
+            if np.isnan(t_lo) and ad > grow_lo * a0:
+                lev = grow_lo * a0
+                t_lo = t + _tay_poly_root(J[0], P, sg, sg * theta_ref + lev, xa, xb,
+                                          sg * da - lev, ad - lev)
+            if np.isnan(t_hi) and ad > grow_hi * a0:
+                lev = grow_hi * a0
+                t_hi = t + _tay_poly_root(J[0], P, sg, sg * theta_ref + lev, xa, xb,
+                                          sg * da - lev, ad - lev)
+            xa = xb
+            da = db
+            th_a = th_b
+            n_a = n_b
+            if fired != 0:
+                status = fired
+                break
+        n_steps += 1
+        t = t_end if (last and status == 0) else t + xa
+        for i in range(4):
+            y[i] = v[i]
+        if status != 0:
+            E = _reduced_energy(rough, h, k1, k2, y)
+            de = abs(E - E0) / max(abs(E0), 1e-300)
+            if de > e_drift:
+                e_drift = de
+    period = np.nan
+    if nc >= 2:
+        den = nc * skk - sk * sk
+        period = (nc * skt - sk * st) / den
+    out[0] = status
+    out[1] = t
+    out[2] = max_d
+    out[3] = nc
+    out[4] = period
+    out[5] = t_lo
+    out[6] = t_hi
+    out[7] = e_drift
+    out[8] = n_steps
+
+
+@numba.njit(parallel=True, cache=True)
+def run_batch_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
+                     max_steps, P):
+    """:func:`run_batch` by the Taylor method of order P (:func:`_one_taylor`); guards are
+    located inside the step where they fire."""
+    n = x0.shape[0]
+    out = np.empty((n, NCOL))
+    atolv = np.full(4, atol)
+    for i in numba.prange(n):
+        _one_taylor(rough, h[i], k1[i], k2[i], x0[i], theta_ref[i], a0[i], grow_lo, grow_hi,
+                    t_end, rtol, atolv, max_steps, P, out[i])
     return out

@@ -299,6 +299,241 @@ def _tay_jet(rough, h, y, J, A, P):
             J[3, k + 1] = 0.0
 
 
+def _tay_jet4_rough(h, y, J, A, P):
+    """The jet of the reduced system ``(theta, omega1, omega2, omega3)`` on rough ground
+    (eq. 2 with eq. 38): :func:`_tay_jet_rough` without the quadratures ``X_C, Y_C, psi,
+    phi`` (which nothing in the reduced system depends on), for the sweeps.
+
+    ``J`` (4, P + 1): rows theta, omega1, omega2, omega3; ``A`` (at least 7 rows): the
+    series of sin, cos, tan theta, tan(theta) omega3, and the three sums of eq. (38) below.
+    Nine convolutions per order, all in one loop of independent sums.
+    """
+    for i in range(4):
+        J[i, 0] = y[i]
+    ht = h if y[0] >= 0.0 else -h  # h~ = h sgn(theta), sgn(0) = +1 (eq. 4, _geometry)
+    h2 = h * h
+    S, C, T, PW3, L, G, H = A[0], A[1], A[2], A[3], A[4], A[5], A[6]
+    w1 = J[1]
+    w2 = J[2]
+    w3 = J[3]
+    e1 = 1.0 / (15.0 + 16.0 * h2)
+    e2 = 1.0 / (3.0 + 8.0 * h2)
+    g2 = (2.0 / 3.0) * (3.0 + 4.0 * h2)
+    cl = 3.0 + 16.0 * h2
+    for k in range(P):
+        s_ = 0.0
+        c_ = 0.0
+        t_ = 0.0
+        pw = 0.0
+        m1 = 0.0
+        m2 = 0.0
+        pl = 0.0
+        d2 = 0.0
+        d3 = 0.0
+        for j in range(1, k):
+            i = k - j
+            dth = w1[j - 1]  # j theta_j
+            s_ += dth * C[i]
+            c_ += dth * S[i]
+            t_ += C[j] * T[i]
+            pw += T[j] * w3[i]
+            m1 += w2[j] * w3[i]
+            m2 += w3[j] * w3[i]
+            pl += T[j] * L[i]
+            d2 += G[j] * w1[i]
+            d3 += H[j] * w1[i]
+        if k == 0:
+            S[0] = math.sin(y[0])
+            C[0] = math.cos(y[0])
+            T[0] = S[0] / C[0]
+            PW3[0] = T[0] * w3[0]
+            m1 = w2[0] * w3[0]
+            m2 = w3[0] * w3[0]
+        else:
+            # s' = c theta', c' = -s theta'; tan theta = s/c
+            dth = w1[k - 1]
+            S[k] = (s_ + dth * C[0]) / k
+            C[k] = -(c_ + dth * S[0]) / k
+            T[k] = (S[k] - t_ - C[k] * T[0]) / C[0]
+            PW3[k] = pw + T[0] * w3[k] + T[k] * w3[0]
+            m1 += w2[0] * w3[k] + w2[k] * w3[0]
+            m2 += 2.0 * w3[0] * w3[k]
+        L[k] = 12.0 * ht * m1 - cl * m2
+        G[k] = 4.0 * ht * w2[k] + g2 * w3[k]
+        H[k] = -6.0 * e2 * w2[k] + 4.0 * ht * e2 * w3[k] + PW3[k]
+        yp = S[k] - ht * C[k]  # eq. (4)
+        if k == 0:
+            pl = T[0] * L[0]
+            d2 = G[0] * w1[0]
+            d3 = H[0] * w1[0]
+        else:
+            pl += T[0] * L[k] + T[k] * L[0]
+            d2 += G[0] * w1[k] + G[k] * w1[0]
+            d3 += H[0] * w1[k] + H[k] * w1[0]
+        kk = 1.0 / (k + 1)
+        J[0, k + 1] = w1[k] * kk  # eq. (2)
+        # eq. (38)
+        J[1, k + 1] = (18.0 * m1 + pl - 12.0 * ht * m2 + 12.0 * yp) * e1 * kk
+        J[2, k + 1] = -d2 * e2 * kk
+        J[3, k + 1] = d3 * kk
+
+
+def _tay_jet4_smooth(h, y, J, A, P):
+    """The jet of the reduced system on smooth ground (eq. 2 with eq. 49), layout of
+    :func:`_tay_jet4_rough`; ``A`` (at least 11 rows).
+
+    eq. (49): ``d1 = N / D`` with ``N = (k2 w2 - k1 w3 p) w3 + y_P + y_P z_P w1^2`` and
+    ``D = k1 + y_P^2`` (the quotient by back-substitution, ``y_P^2`` kept as a series),
+    ``d2 = 0``, ``d3 = (-k2 w2 + k1 w3 p) w1 / k1``.
+    """
+    for i in range(4):
+        J[i, 0] = y[i]
+    ht = h if y[0] >= 0.0 else -h
+    k1 = 0.25 + h * h / 3.0  # eq. (10)
+    k2 = 0.5
+    S, C, T, PW3, YP, ZP = A[0], A[1], A[2], A[3], A[4], A[5]
+    YZ, W11, YY, G, D1 = A[6], A[7], A[8], A[9], A[10]
+    w1 = J[1]
+    w2 = J[2]
+    w3 = J[3]
+    for k in range(P):
+        if k == 0:
+            S[0] = math.sin(y[0])
+            C[0] = math.cos(y[0])
+            T[0] = S[0] / C[0]
+        else:
+            a = 0.0
+            b = 0.0
+            for j in range(1, k + 1):
+                a += w1[j - 1] * C[k - j]  # j theta_j = omega1_{j-1}
+                b += w1[j - 1] * S[k - j]
+            S[k] = a / k
+            C[k] = -b / k
+            a = S[k]
+            for j in range(1, k + 1):
+                a -= C[j] * T[k - j]
+            T[k] = a / C[0]
+        YP[k] = S[k] - ht * C[k]  # eq. (4)
+        ZP[k] = -(C[k] + ht * S[k])
+        pw = 0.0
+        yz = 0.0
+        ww = 0.0
+        yy = 0.0
+        for j in range(k + 1):
+            pw += T[j] * w3[k - j]
+            yz += YP[j] * ZP[k - j]
+            ww += w1[j] * w1[k - j]
+            yy += YP[j] * YP[k - j]
+        PW3[k] = pw
+        YZ[k] = yz
+        W11[k] = ww
+        YY[k] = yy
+        G[k] = k2 * w2[k] - k1 * pw
+        num = YP[k]
+        d3 = 0.0
+        for j in range(k + 1):
+            num += G[j] * w3[k - j] + YZ[j] * W11[k - j]
+            d3 -= G[j] * w1[k - j]
+        for j in range(1, k + 1):
+            num -= YY[j] * D1[k - j]
+        D1[k] = num / (k1 + YY[0])
+        kk = 1.0 / (k + 1)
+        J[0, k + 1] = w1[k] * kk  # eq. (2)
+        J[1, k + 1] = D1[k] * kk
+        J[2, k + 1] = 0.0
+        J[3, k + 1] = d3 / k1 * kk
+
+
+def _tay_normal(h, J, A, P, N):
+    """``N[0..P-1]``: the series of the normal force ``F_z = 1 + z_P omega1^2 - y_P
+    d omega1/dt`` (eq. 11) along the step, from the jet of :func:`_tay_jet4_rough` or
+    :func:`_tay_jet4_smooth` (both keep the series of sin and cos theta in ``A[0]``,
+    ``A[1]``, to order P - 1); ``A[11..13]`` are work rows.  The lift-off guard as a
+    polynomial: sampled and located inside a step at the cost of a Horner sum."""
+    ht = h if J[0, 0] >= 0.0 else -h
+    S, C = A[0], A[1]
+    YP, ZP, W = A[11], A[12], A[13]
+    w1 = J[1]
+    for k in range(P):
+        YP[k] = S[k] - ht * C[k]  # eq. (4)
+        ZP[k] = -(C[k] + ht * S[k])
+        ww = 0.0
+        for j in range(k + 1):
+            ww += w1[j] * w1[k - j]
+        W[k] = ww
+        a = 1.0 if k == 0 else 0.0
+        for j in range(k + 1):
+            a += ZP[j] * W[k - j] - YP[j] * (k - j + 1) * w1[k - j + 1]
+        N[k] = a
+
+
+def _tay_sample(h, J, A, P, x, v):
+    """``v = (theta, omega1, omega2, omega3, F_z)`` at ``x`` into the step of the reduced jet
+    ``J`` (:func:`_tay_jet4_rough` / :func:`_tay_jet4_smooth`).
+
+    Seven Horner sums in one loop (the four components, the series of sin and cos theta
+    in ``A[0]``, ``A[1]`` and of d omega1/dt), F_z from them by eq. (11): ``1 + z_P omega1^2
+    - y_P d omega1/dt``.  The sines come from their series (to order P - 1), not from
+    ``sin(theta(x))``: no transcendental call per sample."""
+    ht = h if J[0, 0] >= 0.0 else -h
+    th = J[0, P]
+    w1 = J[1, P]
+    w2 = J[2, P]
+    w3 = J[3, P]
+    s = A[0, P - 1]
+    c = A[1, P - 1]
+    d1 = P * J[1, P]
+    for k in range(P - 1, -1, -1):
+        th = th * x + J[0, k]
+        w1 = w1 * x + J[1, k]
+        w2 = w2 * x + J[2, k]
+        w3 = w3 * x + J[3, k]
+        if k > 0:
+            s = s * x + A[0, k - 1]
+            c = c * x + A[1, k - 1]
+            d1 = d1 * x + k * J[1, k]
+    y_P = s - ht * c  # eq. (4)
+    z_P = -(c + ht * s)
+    v[0] = th
+    v[1] = w1
+    v[2] = w2
+    v[3] = w3
+    v[4] = 1.0 + z_P * w1 * w1 - y_P * d1  # eq. (11)
+
+
+def _tay_poly(c, deg, x):
+    """``sum_k c[k] x^k`` for k = 0..deg (Horner)."""
+    v = c[deg]
+    for k in range(deg - 1, -1, -1):
+        v = v * x + c[k]
+    return v
+
+
+def _tay_poly_root(c, deg, sg, off, xa, xb, fa, fb):
+    """Root in (xa, xb] of ``f(x) = sg * poly(c)(x) - off`` with ``f(xa)``, ``f(xb)`` of
+    opposite signs (or ``f(xb) = 0``): Illinois regula falsi on the polynomial, to
+    round-off.  Returns the end of the final bracket on the side of ``xa``."""
+    side_flag = 0
+    for _ in range(100):
+        if xb - xa <= 4e-16 * max(1.0, xb):
+            break
+        xc = (xa * fb - xb * fa) / (fb - fa)
+        if not (xa < xc < xb):
+            xc = 0.5 * (xa + xb)
+        fc = sg * _tay_poly(c, deg, xc) - off
+        if (fc > 0.0) == (fa > 0.0) and fc != 0.0:
+            xa, fa = xc, fc
+            if side_flag == -1:
+                fb *= 0.5
+            side_flag = -1
+        else:
+            xb, fb = xc, fc
+            if side_flag == 1:
+                fa *= 0.5
+            side_flag = 1
+    return xa
+
+
 def _tay_eval(J, P, dt, out):
     """out = the Taylor polynomial of every component at ``dt`` (Horner, the components
     interleaved: independent chains rather than one long dependent one at a time)."""

@@ -1002,6 +1002,8 @@ def _add_sweep(sub) -> None:
     x.add_argument("--workers", type=_positive_int, default=None, help="local cores")
     x.add_argument("--dask", default=None, metavar="ADDRESS|local")
     p.add_argument("--chunk", type=_positive_int, default=2048)
+    p.add_argument("--method", choices=("taylor", "dop853"), default="taylor",
+                   help="integrator (default taylor: the batch Taylor kernel)")
     p.add_argument("--out", required=True, help="FILE.zarr or FILE.nc")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(handler=_run_sweep)
@@ -1041,7 +1043,8 @@ def _run_sweep(args) -> int:
             raise CLIError("rollingdisk sweep: error: --basin bisects the kick; drop --perturb")
         ds = basin_sweep(grid, args.t_end, kick_max=args.kick or 1.0, rounds=args.rounds,
                          out=args.out, executor="serial" if executor == "serial" else
-                         "threads", workers=args.workers, chunk=args.chunk)
+                         "threads", workers=args.workers, chunk=args.chunk,
+                         method=args.method)
         n = int(ds.kick_basin.size) * (args.rounds + 1)
     else:
         kick = args.kick if args.kick is not None else (0.0 if args.perturb else 1e-3)
@@ -1049,7 +1052,7 @@ def _run_sweep(args) -> int:
         ds = run_sweep(grid, args.t_end, perturbation=pert, out=args.out, executor=executor,
                        workers=args.workers,
                        dask_address=None if args.dask in (None, "local") else args.dask,
-                       chunk=args.chunk, progress=bar)
+                       chunk=args.chunk, method=args.method, progress=bar)
         n = int(ds.varpi2.size)
         print("", file=sys.stderr)
     wall = time.perf_counter() - start

@@ -15,12 +15,16 @@ Rules (stated once, used everywhere):
   contact theta crossing 0, falling flat |theta| >= pi/2) and
   ``max|theta - theta0| <= BOUND_FACTOR * a0`` with ``BOUND_FACTOR = 20``.
 * ``frequency``: ``2 pi / period``, the period being the least-squares slope of the times
-  of the upward crossings of ``theta - theta0`` (located by cubic Hermite interpolation
-  with omega1 as derivative) against their index; NaN with fewer than 2 crossings.
+  of the upward crossings of ``theta - theta0`` against their index; NaN with fewer than 2
+  crossings.  The crossings are located on the step polynomial (``method="taylor"``, the
+  default) or by cubic Hermite interpolation with omega1 as derivative (``"dop853"``).
 * ``growth_rate``: ``ln(GROW_HI / GROW_LO) / (t_hi - t_lo)`` with ``t_lo`` (``t_hi``) the
-  end of the first step on which ``|theta - theta0|`` exceeds ``GROW_LO * a0``
-  (``GROW_HI * a0``), ``GROW_LO = 2``, ``GROW_HI = 10``: the log-slope of the envelope in
-  the linear window; NaN when the departure never reaches ``GROW_HI * a0``.
+  time at which ``|theta - theta0|`` first exceeds ``GROW_LO * a0`` (``GROW_HI * a0``),
+  ``GROW_LO = 2``, ``GROW_HI = 10``: the log-slope of the envelope in the linear window;
+  NaN when the departure never reaches ``GROW_HI * a0``.  ``taylor`` samples every step
+  at its middle and end, ``dop853`` at its end, and both locate the time inside.
+* Guards: ``taylor`` locates a guard inside the step where it fires (``t_end`` is the
+  event time); ``dop853`` stops at the end of that step.
 * ``energy_drift``: ``max_t |E(t) - E(0)| / |E(0)|`` over accepted steps, E of the reduced
   state (eq. 13 with eqs. 37 and 7 on rough ground; on smooth ground the part without the
   constant horizontal velocity of C).
@@ -206,6 +210,7 @@ class _Spec:
     max_steps: int
     chunk: int
     n: int = field(default=0)
+    method: str = "taylor"
 
     def to_json(self) -> str:
         return json.dumps(asdict(self), sort_keys=True, allow_nan=False)
@@ -277,6 +282,31 @@ def _setup(spec: _Spec, i0: int, i1: int):
     return x0, h, theta_ref, varpi2, stable, a0
 
 
+_METHODS = ("taylor", "dop853")
+
+
+def _check_method(method) -> str:
+    if method not in _METHODS:
+        raise ParameterError(f"method must be one of {_METHODS}, got {method!r}")
+    return method
+
+
+def _kernel(method, rough, h, x0, theta_ref, a0, t_end, rtol, atol, max_steps):
+    """Summaries (n, NCOL) of the trajectories from the rows of ``x0`` by ``method``: the
+    batch Taylor kernel (order from min(rtol, atol), :func:`rollingdisk._taylor.taylor_order`)
+    or the batch DOP853 kernel of :mod:`rollingdisk._sweep_core`."""
+    from . import _sweep_core as core
+    from ._taylor import taylor_order
+
+    k1 = 0.25 + h ** 2 / 3.0  # eq. (10), as Disk.k1_sq
+    k2 = np.full(k1.shape, 0.5)
+    args = (rough, h, k1, k2, np.ascontiguousarray(x0), theta_ref, a0, GROW_LO, GROW_HI,
+            t_end, rtol, atol, max_steps)
+    if method == "taylor":
+        return core.run_batch_taylor(*args, taylor_order(min(rtol, atol)))
+    return core.run_batch(*args)
+
+
 def _compute_chunk(spec: _Spec, k: int, n_threads: int | None = None) -> dict:
     """Summaries of chunk k (a dict of 1-d arrays); deterministic."""
     import numba
@@ -291,12 +321,9 @@ def _compute_chunk(spec: _Spec, k: int, n_threads: int | None = None) -> dict:
     ok = np.all(np.isfinite(x0), axis=1)
     out = np.full((i1 - i0, core.NCOL), np.nan)
     if ok.any():
-        k1 = 0.25 + h[ok] ** 2 / 3.0  # eq. (10), as Disk.k1_sq
-        k2 = np.full(k1.shape, 0.5)
         a0o = np.where(np.isfinite(a0[ok]), a0[ok], 1.0)
-        out[ok] = core.run_batch(spec.grid.ground == "rough", h[ok], k1, k2,
-                                 np.ascontiguousarray(x0[ok]), theta_ref[ok], a0o, GROW_LO,
-                                 GROW_HI, spec.t_end, spec.rtol, spec.atol, spec.max_steps)
+        out[ok] = _kernel(spec.method, spec.grid.ground == "rough", h[ok], x0[ok],
+                          theta_ref[ok], a0o, spec.t_end, spec.rtol, spec.atol, spec.max_steps)
     cols = dict(zip(core.COLUMNS, out.T))
     status = np.where(ok, cols["status"], 0).astype(np.int8)
     period = cols["period"]
@@ -340,7 +367,7 @@ def _dataset(spec: _Spec, cols: dict, executor: str):
     ds = xr.Dataset(data, coords=coords)
     ds.attrs.update({
         "ground": g.ground, "h": json.dumps(list(g.h)), "rtol": spec.rtol, "atol": spec.atol,
-        "t_end_requested": spec.t_end, "max_steps": spec.max_steps,
+        "t_end_requested": spec.t_end, "max_steps": spec.max_steps, "method": spec.method,
         "rollingdisk_version": __version__, "executor": executor, "spec": spec.to_json(),
         "perturbation": json.dumps(asdict(p)),
         "status_codes": json.dumps({str(k): v for k, v in STATUS_NAMES.items()}
@@ -375,7 +402,8 @@ def _check_out(out) -> Path:
 def run_sweep(grid: SweepGrid, t_end: float, *, perturbation: Perturbation | None = None,
               out=None, executor: str = "serial", workers: int | None = None,
               dask_address: str | None = None, chunk: int = 2048, rtol: float = 1e-9,
-              atol: float = 1e-9, max_steps: int = 1_000_000, progress=None):
+              atol: float = 1e-9, max_steps: int = 1_000_000, method: str = "taylor",
+              progress=None):
     """Integrate a perturbed steady motion from every grid point; an ``xarray.Dataset``.
 
     Parameters
@@ -392,6 +420,15 @@ def run_sweep(grid: SweepGrid, t_end: float, *, perturbation: Perturbation | Non
         ``serial``: one thread; ``threads``: numba threads over ``workers`` (default all)
         cores; ``dask``: ``dask.distributed`` tasks of ``chunk`` trajectories on a
         LocalCluster with ``workers`` processes, or on the scheduler ``dask_address``.
+    rtol, atol : float
+        Tolerances (for ``taylor`` the order is ``ceil(-ln min(rtol, atol) / 2) + 1``).
+    max_steps : int
+        Step budget per trajectory; a trajectory that exhausts it has status "failed".
+    method : {"taylor", "dop853"}
+        ``taylor`` (default): the batch Taylor kernel (:mod:`rollingdisk._taylor`; guards,
+        crossings and thresholds located on the step polynomials, 2.3-2.7 times the
+        trajectories per second of ``dop853``, docs/sweeps.md); ``dop853``: the batch
+        DOP853 kernel (guards checked at step ends).
     progress : callable, optional
         ``progress(done, total, rate, eta)`` after each chunk (trajectories, per second,
         seconds).  An exception it raises interrupts the sweep (finished chunks are kept).
@@ -418,7 +455,8 @@ def run_sweep(grid: SweepGrid, t_end: float, *, perturbation: Perturbation | Non
     if workers is not None and not (isinstance(workers, int) and workers >= 1):
         raise ParameterError("workers must be an integer >= 1")
     n = int(np.prod(grid.shape)) * len(perturbation.kick)
-    spec = _Spec(grid, perturbation, t_end, rtol, atol, int(max_steps), chunk, n)
+    _check_method(method)
+    spec = _Spec(grid, perturbation, t_end, rtol, atol, int(max_steps), chunk, n, method)
     n_chunks = -(-n // chunk)
     folder = None
     done: set = set()
@@ -512,18 +550,20 @@ def open_sweep(path):
 def basin_sweep(grid: SweepGrid, t_end: float, *, kick_max: float = 1.0, rounds: int = 10,
                 out=None, executor: str = "serial", workers: int | None = None,
                 chunk: int = 2048, rtol: float = 1e-9, atol: float = 1e-9,
-                max_steps: int = 1_000_000, progress=None):
+                max_steps: int = 1_000_000, method: str = "taylor", progress=None):
     """Finite-amplitude stability: per steady motion the largest kick in omega1 (bisection
     over ``[0, kick_max]``, ``rounds`` rounds, each round one batch over the whole grid)
     that still gives bounded motion (``stable_simulated``) over ``t_end``.
 
-    Returns an ``xarray.Dataset`` with ``kick_basin`` (lower end of the final bracket; 0
+    ``method`` as in :func:`run_sweep`.  Returns an ``xarray.Dataset`` with ``kick_basin``
+    (lower end of the final bracket; 0
     where even the first trial failed, ``kick_max`` where it never failed, NaN where there
     is no steady motion) and the closed-form ``varpi2``, ``stable``.
     """
     kick_max = check_real("kick_max", kick_max, low=0.0, low_open=True, high=100.0)
     if not (isinstance(rounds, int) and 1 <= rounds <= 60):
         raise ParameterError("rounds must be an integer in [1, 60]")
+    _check_method(method)
     if grid.states is not None:
         raise ParameterError("basin_sweep needs a grid of steady motions, not states")
     shape = grid.shape
@@ -538,7 +578,8 @@ def basin_sweep(grid: SweepGrid, t_end: float, *, kick_max: float = 1.0, rounds:
         out = _check_out(out)
         folder = out.with_name(out.name + ".partial")
         key = json.dumps({"grid": asdict(grid), "t_end": t_end, "kick_max": kick_max,
-                          "rtol": rtol, "atol": atol, "max_steps": int(max_steps)},
+                          "rtol": rtol, "atol": atol, "max_steps": int(max_steps),
+                          "method": method},
                          sort_keys=True, allow_nan=False)
         saved = _last_round(folder, key)
         if saved is not None:
@@ -550,7 +591,8 @@ def basin_sweep(grid: SweepGrid, t_end: float, *, kick_max: float = 1.0, rounds:
             (folder / "basin.json").write_text(key)
     for r in range(start, rounds + 1):
         # one batch: every point with its own kick (the grid's states list)
-        ds = _basin_round(grid, trial, t_end, executor, workers, chunk, rtol, atol, max_steps)
+        ds = _basin_round(grid, trial, t_end, executor, workers, chunk, rtol, atol, max_steps,
+                          method)
         ok = ds["stable_simulated"].values.reshape(shape) == 1
         if first is None:
             first = {"stable": ds["stable"].values.reshape(shape),
@@ -578,7 +620,7 @@ def basin_sweep(grid: SweepGrid, t_end: float, *, kick_max: float = 1.0, rounds:
          "stable": (dims, st)},
         coords=grid.coords())
     res.attrs.update({"ground": grid.ground, "t_end": t_end, "kick_max": kick_max,
-                      "rounds": rounds, "rtol": rtol, "atol": atol,
+                      "rounds": rounds, "rtol": rtol, "atol": atol, "method": method,
                       "rule": f"bounded: completed and max_dtheta <= {BOUND_FACTOR} * kick"})
     if out is not None:
         _save(res, out)
@@ -602,10 +644,11 @@ def _last_round(folder: Path, key: str):
         return (int(rounds[-1].stem.split("_")[1]) + 1, z["lo"], z["hi"], z["trial"], first)
 
 
-def _basin_round(grid, kicks, t_end, executor, workers, chunk, rtol, atol, max_steps):
+def _basin_round(grid, kicks, t_end, executor, workers, chunk, rtol, atol, max_steps,
+                 method):
     """One batch: the steady state of every grid point with its own kick."""
     spec = _Spec(grid, Perturbation(kick=1.0), t_end, rtol, atol, int(max_steps), chunk,
-                 int(np.prod(grid.shape)))
+                 int(np.prod(grid.shape)), method)
     x0, h, theta_ref, varpi2, stable, _ = _setup(spec, 0, spec.n)
     k = np.ravel(kicks)
     x0[:, 1] = k
@@ -620,10 +663,8 @@ def _basin_round(grid, kicks, t_end, executor, workers, chunk, rtol, atol, max_s
     try:
         out = np.full((spec.n, core.NCOL), np.nan)
         if ok.any():
-            k1 = 0.25 + h[ok] ** 2 / 3.0
-            out[ok] = core.run_batch(grid.ground == "rough", h[ok], k1, np.full(k1.shape, 0.5),
-                                     np.ascontiguousarray(x0[ok]), theta_ref[ok], k[ok],
-                                     GROW_LO, GROW_HI, t_end, rtol, atol, max_steps)
+            out[ok] = _kernel(method, grid.ground == "rough", h[ok], x0[ok], theta_ref[ok],
+                              k[ok], t_end, rtol, atol, max_steps)
     finally:
         numba.set_num_threads(old)
     bounded = (out[:, 0] == core.COMPLETED) & (out[:, 2] <= BOUND_FACTOR * k)
