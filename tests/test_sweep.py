@@ -170,3 +170,33 @@ def test_basin_sweep_resumes_after_the_last_finished_round(tmp_path):
     np.testing.assert_array_equal(ds.kick_basin.values, whole.kick_basin.values)
     np.testing.assert_array_equal(sweep.open_sweep(out).kick_basin.values,
                                   whole.kick_basin.values)
+
+
+@pytest.mark.parametrize("ground", ["rough", "smooth"])
+@pytest.mark.parametrize("second", ["omega30", "Omega0"])
+def test_grid_setup_is_steady_motion_and_stability_point_by_point(ground, second):
+    """The element-wise set-up of circles (eqs. 3, 28/34, 40/51 on whole chunks) against
+    rollingdisk.steady_motion and rollingdisk.stability called at every point; NaN exactly
+    where they refuse (Omega0 = 0; theta0 = 0 with h > 0)."""
+    from rollingdisk import _stability
+
+    g = sweep.SweepGrid(ground, h=(0.0, 0.17), theta0=np.linspace(-1.4, 1.4, 9),
+                        **{second: np.linspace(-6.0, 6.0, 9)})
+    spec = sweep._Spec(g, sweep.Perturbation(kick=2e-3, tilt=1e-3), 10.0, 1e-9, 1e-9, 1000,
+                       64, 162)
+    x0, h, th, varpi2, stable, a0 = sweep._setup(spec, 0, spec.n)
+    vals = np.asarray(getattr(g, second))
+    for j, (ih, it, iv) in enumerate(np.ndindex(g.shape)):
+        hh, t0, v = g.h[ih], g.theta0[it], vals[iv]
+        assert h[j] == hh and th[j] == t0
+        Omega0 = v / math.cos(t0) if second == "omega30" else v
+        try:
+            m = rd.steady_motion(rd.Disk(hh), ground, t0, Omega0=Omega0)
+        except ValueError:
+            assert np.all(np.isnan(x0[j])) and np.isnan(varpi2[j]) and stable[j] == -1
+            continue
+        np.testing.assert_allclose(x0[j], [t0 + 1e-3, 2e-3, m.omega20, m.omega30], rtol=1e-12,
+                                   atol=1e-12)
+        w = _stability.stability(m).varpi2
+        assert math.isclose(varpi2[j], w, rel_tol=1e-10, abs_tol=1e-10)
+        assert stable[j] == (1 if w > 0 else 0)

@@ -209,24 +209,32 @@ def _describe_r_range(name: str, lo: float | None, hi: float | None) -> str:
     return f"{name} > {lo:.6g}"
 
 
+def _omega20(ground: str, h, ht, s, c, omega30):
+    """``omega20`` of the steady motion with ``omega30`` at the tilt with ``sin = s``,
+    ``cos = c`` (``h~ = ht``): eq. (28) on rough, eq. (34) on smooth ground, solved for
+    omega20.  Element-wise on arrays (the sweeps use it for whole grids)."""
+    p = s / c
+    y_P = s - ht * c  # eq. (16)
+    if ground == "rough":
+        return (((3.0 + 16.0 * h * h) * p + 12.0 * ht) * omega30 * omega30 - 12.0 * y_P) / (
+            6.0 * (3.0 + 2.0 * ht * p) * omega30)
+    k1, k2 = 0.25 + h * h / 3.0, 0.5  # eq. (10), as Disk.k1_sq, Disk.k2_sq
+    return (k1 * p * omega30 * omega30 - y_P) / (k2 * omega30)  # eq. (34)
+
+
 def _build(disk: Disk, ground: str, theta0: float, Omega0: float) -> SteadyMotion:
     """The circle/spin of ``disk`` at ``theta0`` turning at ``Omega0 != 0``."""
     h = disk.h
     ht = h_tilde(h, theta0)
     s, c = math.sin(theta0), math.cos(theta0)
-    p = s / c
     y_P = s - ht * c  # eq. (16)
     omega30 = Omega0 * c  # eq. (3)
+    omega20 = _omega20(ground, h, ht, s, c, omega30)
     if ground == "rough":
-        # eq. (28) solved for omega20
-        omega20 = (((3.0 + 16.0 * h * h) * p + 12.0 * ht) * omega30 * omega30 - 12.0 * y_P) / (
-            6.0 * (3.0 + 2.0 * ht * p) * omega30)
         v_Cx0 = omega20 - ht * omega30  # eq. (18) with v_Px0 = 0
         r_C = -v_Cx0 / Omega0  # eq. (24)
         F_y = -r_C * Omega0 * Omega0  # eq. (27)
     else:
-        k1, k2 = disk.k1_sq, disk.k2_sq
-        omega20 = (k1 * p * omega30 * omega30 - y_P) / (k2 * omega30)  # eq. (34)
         v_Cx0 = 0.0  # eq. (19)_2 with F_y = 0
         r_C = 0.0
         F_y = 0.0

@@ -251,6 +251,9 @@ def _setup(spec: _Spec, i0: int, i1: int):
     else:
         ih, it, iv = np.unravel_index(q, g.shape)
         thetas = g.theta0
+    if second in ("omega30", "Omega0"):  # the whole chunk at once
+        return _setup_circles(g, second, np.asarray(g.h)[ih], np.asarray(thetas)[it],
+                              vals[iv], tilt, kick)
     for j in range(n):
         hh = g.h[ih[j]]
         th = thetas[it[j]]
@@ -305,6 +308,34 @@ def _kernel(method, rough, h, x0, theta_ref, a0, t_end, rtol, atol, max_steps):
     if method == "taylor":
         return core.run_batch_taylor(*args, taylor_order(min(rtol, atol)))
     return core.run_batch(*args)
+
+
+def _setup_circles(g, second, h, theta0, v, tilt, kick):
+    """:func:`_setup` for circles given by omega30 or Omega0, element-wise on the chunk
+    (eqs. 3, 28/34 through :func:`rollingdisk.steady._omega20`, and eq. 40/51 through
+    :func:`rollingdisk._stability.varpi2_closed_form`): 26 -> 3 us a point, which
+    kept the Python set-up from limiting the speed-up of the threads."""
+    from . import _stability
+    from .disk import h_tilde
+    from .steady import _omega20
+
+    s, c = np.sin(theta0), np.cos(theta0)
+    omega30 = v if second == "omega30" else v * c  # eq. (3)
+    ht = h_tilde(h, theta0)
+    with np.errstate(all="ignore"):
+        omega20 = _omega20(g.ground, h, ht, s, c, omega30)
+    # as steady_motion: Omega0 = 0 is no circle, theta0 = 0 is outside the theory for h > 0
+    ok = (v != 0) & ~((h > 0) & (theta0 == 0)) & np.isfinite(omega20)
+    n = h.size
+    varpi2 = np.full(n, np.nan)
+    varpi2[ok] = _stability.varpi2_closed_form(h[ok], g.ground, theta0[ok], omega20[ok],
+                                               omega30[ok])
+    ok &= np.isfinite(varpi2)
+    varpi2[~ok] = np.nan
+    x0 = np.full((n, 4), np.nan)
+    x0[ok] = np.column_stack([theta0 + tilt, kick, omega20, omega30])[ok]
+    stable = np.where(ok, (varpi2 > 0).astype(np.int8), -1).astype(np.int8)
+    return x0, h, theta0.copy(), varpi2, stable, np.abs(kick) + np.abs(tilt)
 
 
 def _compute_chunk(spec: _Spec, k: int, n_threads: int | None = None) -> dict:
