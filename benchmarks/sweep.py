@@ -104,6 +104,11 @@ def heyoka_batch(g, k):
     return nb * B / dt, f"{nb * B / dt:.0f} traj/s/core (heyoka {hy.__version__}, SIMD width {B})"
 
 
+def _warm_worker():
+    """Load the compiled kernels in a Dask worker (from numba's cache)."""
+    run_sweep(grid(16), 1.0, perturbation=Perturbation(kick=KICK))
+
+
 def main():
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 16384
     g = grid(n)
@@ -135,9 +140,10 @@ def main():
 
         with LocalCluster(n_workers=ncores, threads_per_worker=1, dashboard_address=None) as c:
             with Client(c) as cl:
-                cl.run(lambda: __import__("rollingdisk._sweep_core"))
+                # every worker loads the compiled kernels before the clock starts (a
+                # warm-up sweep of one task would warm one worker only)
+                cl.run(_warm_worker)
                 addr = c.scheduler_address
-                run_sweep(grid(16), 1.0, executor="dask", dask_address=addr, **kw)
                 dsd, td = timed(lambda: run_sweep(g, T, executor="dask", dask_address=addr,
                                                   **kw))
         rd_ = n / td
