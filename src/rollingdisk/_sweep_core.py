@@ -153,6 +153,25 @@ def _hermite_root(dt, d0, v0, d1, v1):
 
 
 @numba.njit(cache=True)
+def _summaries(out, status, t, max_d, nc, sk, st, skk, skt, t_lo, t_hi, e_drift, n_steps):
+    """Fill one row of :data:`COLUMNS`; the period is the least-squares slope of the ``nc``
+    crossing times against their index (sums ``sk, st, skk, skt``), NaN below two."""
+    period = np.nan
+    if nc >= 2:
+        den = nc * skk - sk * sk
+        period = (nc * skt - sk * st) / den
+    out[0] = status
+    out[1] = t
+    out[2] = max_d
+    out[3] = nc
+    out[4] = period
+    out[5] = t_lo
+    out[6] = t_hi
+    out[7] = e_drift
+    out[8] = n_steps
+
+
+@numba.njit(cache=True)
 def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
          max_steps, out):
     n = 4
@@ -251,19 +270,7 @@ def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, ato
                 status = EDGE_CONTACT
         elif g[2] <= 0.0:
             status = FELL_FLAT
-    period = np.nan
-    if nc >= 2:
-        den = nc * skk - sk * sk
-        period = (nc * skt - sk * st) / den
-    out[0] = status
-    out[1] = t
-    out[2] = max_d
-    out[3] = nc
-    out[4] = period
-    out[5] = t_lo
-    out[6] = t_hi
-    out[7] = e_drift
-    out[8] = n_steps
+    _summaries(out, status, t, max_d, nc, sk, st, skk, skt, t_lo, t_hi, e_drift, n_steps)
 
 
 @numba.njit(cache=True)
@@ -438,19 +445,7 @@ def _one_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rt
             de = abs(E - E0) / max(abs(E0), 1e-300)
             if de > e_drift:
                 e_drift = de
-    period = np.nan
-    if nc >= 2:
-        den = nc * skk - sk * sk
-        period = (nc * skt - sk * st) / den
-    out[0] = status
-    out[1] = t
-    out[2] = max_d
-    out[3] = nc
-    out[4] = period
-    out[5] = t_lo
-    out[6] = t_hi
-    out[7] = e_drift
-    out[8] = n_steps
+    _summaries(out, status, t, max_d, nc, sk, st, skk, skt, t_lo, t_hi, e_drift, n_steps)
 
 
 @numba.njit(parallel=True, cache=True)
