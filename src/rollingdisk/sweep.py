@@ -313,7 +313,7 @@ def _kernel(method, rough, h, x0, theta_ref, a0, t_end, rtol, atol, max_steps):
 def _setup_circles(g, second, h, theta0, v, tilt, kick):
     """:func:`_setup` for circles given by omega30 or Omega0, element-wise on the chunk
     (eqs. 3, 28/34 through :func:`rollingdisk.steady._omega20`, and eq. 40/51 through
-    :func:`rollingdisk._stability.varpi2_closed_form`): 26 -> 3 us a point, which
+    :func:`rollingdisk._stability.varpi2_closed_form`): 26 -> 0.2 us a point, which
     kept the Python set-up from limiting the speed-up of the threads."""
     from . import _stability
     from .disk import h_tilde
@@ -457,7 +457,7 @@ def run_sweep(grid: SweepGrid, t_end: float, *, perturbation: Perturbation | Non
         Step budget per trajectory; a trajectory that exhausts it has status "failed".
     method : {"taylor", "dop853"}
         ``taylor`` (default): the batch Taylor kernel (:mod:`rollingdisk._taylor`; guards,
-        crossings and thresholds located on the step polynomials, 2.3-2.7 times the
+        crossings and thresholds located on the step polynomials, 2.0-2.1 times the
         trajectories per second of ``dop853``, docs/sweeps.md); ``dop853``: the batch
         DOP853 kernel (guards checked at step ends).
     progress : callable, optional
