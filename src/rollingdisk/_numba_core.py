@@ -37,16 +37,18 @@ _INTEGRATOR = ("_rhs", "_rhs_col", "_guards", "_combine", "_step", "_dense_tail"
                "integrate")
 #: The Taylor integrator of _taylor.py (``simulate(method="taylor")``) and the reduced jets,
 #: sampler and root finder of the sweeps' batch Taylor kernel (:mod:`rollingdisk._sweep_core`).
-_TAYLOR = ("_tay_jet_rough", "_tay_jet", "_tay_jet4_rough", "_tay_jet4_smooth", "_tay_normal",
-           "_tay_sample", "_tay_poly", "_tay_poly_root", "_tay_eval", "_tay_eval_reduced",
-           "_tay_step_size", "_tay_locate", "_tay_integrate")
+_TAYLOR = ("_tay_jet_rough", "_tay_rows_rough", "_tay_rows_smooth",
+           "_tay_quadratures_smooth", "_tay_jet", "_tay_jet4_rough", "_tay_jet4_smooth",
+           "_tay_normal", "_tay_sample", "_tay_poly", "_tay_poly_root", "_tay_eval",
+           "_tay_eval_reduced", "_tay_step_size", "_tay_locate", "_tay_integrate")
 _DISPATCHERS = _KERNELS + _INTEGRATOR + _TAYLOR
 #: The Taylor jet and its Horner evaluation: multiply-adds fused (``contract``: one rounding
 #: instead of two, the order of every sum kept, no reassociation) and numpy's error model
 #: (a quotient by cos theta = 0 gives inf, which fails the step size, instead of a branch
 #: raising ZeroDivisionError on every division): the jet 0.97 -> 0.71 ms per 1860 calls.
-_CONTRACT = ("_tay_jet_rough", "_tay_jet", "_tay_jet4_rough", "_tay_jet4_smooth", "_tay_normal",
-             "_tay_sample", "_tay_poly", "_tay_eval", "_tay_eval_reduced")
+_CONTRACT = ("_tay_jet_rough", "_tay_rows_rough", "_tay_rows_smooth",
+             "_tay_quadratures_smooth", "_tay_jet", "_tay_jet4_rough", "_tay_jet4_smooth",
+             "_tay_normal", "_tay_sample", "_tay_poly", "_tay_eval", "_tay_eval_reduced")
 
 
 def _compile(name):
