@@ -153,9 +153,23 @@ def _hermite_root(dt, d0, v0, d1, v1):
 
 
 @numba.njit(cache=True)
-def _summaries(out, status, t, max_d, nc, sk, st, skk, skt, t_lo, t_hi, e_drift, n_steps):
-    """Fill one row of :data:`COLUMNS`; the period is the least-squares slope of the ``nc``
-    crossing times against their index (sums ``sk, st, skk, skt``), NaN below two."""
+def _add_crossing(cr, tc):
+    """Add the crossing time ``tc`` to the least-squares sums ``cr = (count, sum k, sum t_k,
+    sum k^2, sum k t_k)`` of the crossing times t_k against their index k."""
+    k = cr[0]
+    cr[1] += k
+    cr[2] += tc
+    cr[3] += k * k
+    cr[4] += k * tc
+    cr[0] = k + 1.0
+
+
+@numba.njit(cache=True)
+def _summaries(out, status, t, max_d, cr, t_lo, t_hi, e_drift, n_steps):
+    """Fill one row of :data:`COLUMNS`; the period is the least-squares slope of the
+    crossing times against their index (sums ``cr`` of :func:`_add_crossing`), NaN below
+    two crossings."""
+    nc, sk, st, skk, skt = cr[0], cr[1], cr[2], cr[3], cr[4]
     period = np.nan
     if nc >= 2:
         den = nc * skk - sk * sk
@@ -186,12 +200,7 @@ def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, ato
     max_d = abs(y[0] - theta_ref)
     t_lo = np.nan
     t_hi = np.nan
-    # least squares of crossing times t_k against k
-    nc = 0
-    sk = 0.0
-    st = 0.0
-    skk = 0.0
-    skt = 0.0
+    cr = np.zeros(5)  # least squares of crossing times t_k against k (_add_crossing)
     e_drift = 0.0
     status = 0
     n_steps = 0
@@ -238,12 +247,7 @@ def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, ato
         d0 = y[0] - theta_ref
         d1 = y_new[0] - theta_ref
         if d0 < 0.0 <= d1:
-            tc = t + _hermite_root(dt, d0, y[1], d1, y_new[1])
-            sk += nc
-            st += tc
-            skk += nc * nc
-            skt += nc * tc
-            nc += 1
+            _add_crossing(cr, t + _hermite_root(dt, d0, y[1], d1, y_new[1]))
         ad = abs(d1)
         if ad > max_d:
             max_d = ad
@@ -270,7 +274,7 @@ def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, ato
                 status = EDGE_CONTACT
         elif g[2] <= 0.0:
             status = FELL_FLAT
-    _summaries(out, status, t, max_d, nc, sk, st, skk, skt, t_lo, t_hi, e_drift, n_steps)
+    _summaries(out, status, t, max_d, cr, t_lo, t_hi, e_drift, n_steps)
 
 
 @numba.njit(cache=True)
@@ -338,11 +342,7 @@ def _one_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rt
     max_d = abs(y[0] - theta_ref)
     t_lo = np.nan
     t_hi = np.nan
-    nc = 0
-    sk = 0.0
-    st = 0.0
-    skk = 0.0
-    skt = 0.0
+    cr = np.zeros(5)  # least squares of crossing times t_k against k (_add_crossing)
     e_drift = 0.0
     status = 0
     n_steps = 0
@@ -411,12 +411,7 @@ def _one_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rt
             db = th_b - theta_ref
             # summaries on (xa, xb]
             if da < 0.0 <= db:
-                tc = t + _tay_poly_root(J[0], P, 1.0, theta_ref, xa, xb, da, db)
-                sk += nc
-                st += tc
-                skk += nc * nc
-                skt += nc * tc
-                nc += 1
+                _add_crossing(cr, t + _tay_poly_root(J[0], P, 1.0, theta_ref, xa, xb, da, db))
             ad = abs(db)
             if ad > max_d:
                 max_d = ad
@@ -445,7 +440,7 @@ def _one_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rt
             de = abs(E - E0) / max(abs(E0), 1e-300)
             if de > e_drift:
                 e_drift = de
-    _summaries(out, status, t, max_d, nc, sk, st, skk, skt, t_lo, t_hi, e_drift, n_steps)
+    _summaries(out, status, t, max_d, cr, t_lo, t_hi, e_drift, n_steps)
 
 
 @numba.njit(parallel=True, cache=True)
