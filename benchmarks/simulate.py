@@ -12,7 +12,7 @@ subprocess) and warm (loading the cache); and the same integrator uncompiled (th
 short run takes).
 
 Then, if heyoka (a Taylor integrator, PyPI) is importable, the side-by-side at equal energy
-drift: heyoka's ODE is built from the very kernels of rollingdisk.equations (their ``np``
+drift: heyoka's ODE is built from the very kernels of rollingdisk.model.equations (their ``np``
 bound to heyoka's sin/cos), for each heyoka tolerance its drift is measured (max over 20001
 points of the run), simulate's loosest tolerance (``method="taylor"`` and ``"dop853"``,
 each with ``error_control="reduced"`` and ``"full"``) with a drift no larger is found, and
@@ -34,6 +34,7 @@ import time
 import numpy as np
 from scipy.integrate import solve_ivp
 
+import rollingdisk as rd
 from rollingdisk import Disk, energy_drift, equations_of_motion, jit_compile, omega_dot, simulate
 
 H, THETA0, OMEGA30, PERTURB = 0.1, 0.3, 3.0, 1e-4
@@ -97,7 +98,7 @@ def main(argv=None) -> int:
     sol = solve_ivp(fun, (0.0, args.T), y0, method="DOP853", rtol=rtol, atol=atol)
     base_wall = time.perf_counter() - t0
     base_steps = sol.t.size - 1
-    from rollingdisk.equations import energy
+    from rollingdisk.model.equations import energy
 
     E = energy(disk, "rough", sol.y)
     base_drift = float(np.max(np.abs(E - E[0])) / abs(E[0]))
@@ -126,8 +127,9 @@ def main(argv=None) -> int:
 
 
 def uncompiled(disk, y0, T, rtol):
-    """The same integrator run uncompiled (rollingdisk._pycore), as a short run does."""
-    from rollingdisk import _jit, _simulate
+    """The same integrator run uncompiled (rollingdisk.integrate.pycore), as a short run does."""
+    from rollingdisk.integrate import jit as _jit
+    from rollingdisk.integrate import simulation as _simulate
 
     core, budget = _simulate._core, _jit.PY_BUDGET
     _simulate._core, _jit.PY_BUDGET = None, float("inf")
@@ -141,14 +143,14 @@ def uncompiled(disk, y0, T, rtol):
 
 
 def heyoka_system(disk):
-    """heyoka's ODE from the kernels of rollingdisk.equations themselves (nothing restated):
+    """heyoka's ODE from the kernels of rollingdisk.model.equations themselves (nothing restated):
     their ``np`` bound to heyoka's functions; ``sgn(theta) = 1`` (the job stays at
     theta > 0, as the guards check)."""
     import types
 
     import heyoka as hy
 
-    from rollingdisk import equations as eq
+    from rollingdisk.model import equations as eq
 
     class HeyokaNp:
         sin = staticmethod(hy.sin)
@@ -160,12 +162,12 @@ def heyoka_system(disk):
     for name in ("_geometry", "_rough_omega_dot", "_rough_rhs"):
         f = eq.__dict__[name]
         ns[name] = types.FunctionType(f.__code__, ns, name)
-    xs = hy.make_vars(*eq.ROUGH_STATE)
+    xs = hy.make_vars(*rd.ROUGH_STATE)
     return list(zip(xs, ns["_rough_rhs"](disk.h, xs)))
 
 
 def grid_drift(disk, Y):
-    from rollingdisk.equations import energy
+    from rollingdisk.model.equations import energy
 
     E = energy(disk, "rough", Y)
     return float(np.max(np.abs(E - E[0])) / abs(E[0]))

@@ -22,7 +22,7 @@ import time
 import numpy as np
 
 import rollingdisk as rd
-from rollingdisk.sweep import Perturbation, SweepGrid, run_sweep
+from rollingdisk.sweep.runner import Perturbation, SweepGrid, run_sweep
 
 H, T, TOL, KICK = 0.17, 100.0, 1e-9, 1e-3
 
@@ -64,7 +64,7 @@ def heyoka_batch(g, k):
         return None, "not installed"
     import types
 
-    from rollingdisk import equations as eq
+    from rollingdisk.model import equations as eq
 
     class _np:
         sin = staticmethod(hy.sin)

@@ -1,6 +1,6 @@
 """Independent second derivation of the equations of motion: Kane's method (sympy.mechanics).
 
-Test-side helper (not a test file).  The library's equations (``rollingdisk.equations``) and
+Test-side helper (not a test file).  The library's equations (``rollingdisk.model.equations``) and
 the lead's Newton-Euler derivation (``rollingdisk.symbolic``) both go through the contact
 force, eqs. (8)-(11).  Here the contact force never enters the dynamics: on rough ground it
 is non-contributing because the contact point is at rest (nonholonomic constraints); on

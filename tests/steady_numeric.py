@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from rollingdisk import Disk
-from rollingdisk.equations import omega_dot
+from rollingdisk.model.equations import omega_dot
 
 
 def steady_omega20(h, ground, theta0, omega30):

@@ -20,8 +20,8 @@ from hypothesis import strategies as st  # noqa: E402
 from scipy.integrate import solve_ivp  # noqa: E402
 
 from rollingdisk import Disk, contact_point, equations_of_motion, omega_dot  # noqa: E402
-from rollingdisk.animation import animate, body_frame, disk_pose, poses  # noqa: E402
-from rollingdisk.plotting import (  # noqa: E402
+from rollingdisk.plotting.animation import animate, body_frame, disk_pose, poses
+from rollingdisk.plotting.plots import (
     plot_contact_forces,
     plot_energy_error,
     plot_paths,

@@ -16,8 +16,8 @@ matplotlib.use("Agg")
 
 import pytest  # noqa: E402
 
-from rollingdisk.atlas import build_atlas  # noqa: E402
-from rollingdisk.cli import main  # noqa: E402
+from rollingdisk.atlas.build import build_atlas
+from rollingdisk.cli.main import main
 
 
 def _referenced(index_html: str):
@@ -73,7 +73,7 @@ def test_atlas_progress_lines(quick_atlas):
 
 
 def test_cli_atlas_is_a_thin_wrapper(tmp_path, monkeypatch, capsys):
-    import rollingdisk.atlas as atlas
+    import rollingdisk.atlas.build as atlas
 
     calls = []
 

@@ -4,7 +4,7 @@ import json
 import subprocess
 import sys
 
-from rollingdisk.cli import main
+from rollingdisk.cli.main import main
 
 
 def test_derive_json_section_2(capsys):

@@ -11,7 +11,7 @@ import json
 import numpy as np
 import pytest
 
-from rollingdisk.cli import EULER_DISK_FILES, main
+from rollingdisk.cli.main import EULER_DISK_FILES, main
 
 SHORT = ["--alpha0", "0.05", "--quiet"]
 

@@ -8,8 +8,8 @@ import math
 import pytest
 
 from rollingdisk import Disk, stability, thresholds
-from rollingdisk.cli import main
-from rollingdisk.steady import steady_motion, straight_line
+from rollingdisk.cli.main import main
+from rollingdisk.theory.steady import steady_motion, straight_line
 
 KEYS = {"ground", "h", "motion", "theta0", "Omega0", "omega0", "omega20", "omega30", "r_C",
         "r_P", "F_y", "varpi2", "stable", "period", "v_C"}

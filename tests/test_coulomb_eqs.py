@@ -1,5 +1,5 @@
 """Coulomb ground, equations: kernels against the sympy derivation, limits, energy rate,
-ground values (rollingdisk.ground, rollingdisk.symbolic.coulomb)."""
+ground values (rollingdisk.friction.ground, rollingdisk.symbolic.coulomb)."""
 
 import math
 
@@ -8,9 +8,8 @@ import pytest
 
 import rollingdisk as rd
 from conftest import random_states
-from rollingdisk import equations as eq
-from rollingdisk.errors import ParameterError, ParameterTypeError
-from rollingdisk.ground import (
+from rollingdisk.friction import coulomb as eq
+from rollingdisk.friction.ground import (
     AirDrag,
     Coulomb,
     PivotFriction,
@@ -18,6 +17,7 @@ from rollingdisk.ground import (
     angular_velocity_xyz,
     check_any_ground,
 )
+from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 N = 60
 

@@ -1,4 +1,4 @@
-"""Hybrid rolling/sliding simulation on Coulomb ground (rollingdisk._hybrid)."""
+"""Hybrid rolling/sliding simulation on Coulomb ground (rollingdisk.friction.hybrid)."""
 
 import math
 
@@ -7,9 +7,9 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import rollingdisk as rd
-from rollingdisk._hybrid import energy_balance, simulate_coulomb, slip_direction
-from rollingdisk.errors import ParameterError
-from rollingdisk.ground import Coulomb
+from rollingdisk.friction.ground import Coulomb
+from rollingdisk.friction.hybrid import energy_balance, simulate_coulomb, slip_direction
+from rollingdisk.util.errors import ParameterError
 
 ROUGH_IN_COULOMB = [0, 1, 4, 5, 6, 7, 8, 9]
 

@@ -8,8 +8,8 @@ from hypothesis import strategies as st
 
 import rollingdisk as rd
 from conftest import SIGN
-from rollingdisk.errors import ParameterError
-from rollingdisk.ground import Coulomb
+from rollingdisk.friction.ground import Coulomb
+from rollingdisk.util.errors import ParameterError
 
 
 @settings(max_examples=120, deadline=None)

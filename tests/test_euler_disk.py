@@ -1,4 +1,4 @@
-"""Euler's disk (rollingdisk.euler_disk), grouped by source of truth:
+"""Euler's disk (rollingdisk.friction.euler_disk), grouped by source of truth:
 
 * the sympy derivation (sliding system with a general friction force) vs the creep
   right-hand side at random states; the creep law's shape derived with sympy;
@@ -16,9 +16,7 @@ import numpy as np
 import pytest
 
 import rollingdisk as rd
-from rollingdisk import equations as eq
-from rollingdisk.errors import ParameterError
-from rollingdisk.euler_disk import (
+from rollingdisk.friction.euler_disk import (
     AIR_VISCOSITY,
     EulerDisk,
     _energy,
@@ -28,6 +26,8 @@ from rollingdisk.euler_disk import (
     predicted_exponents,
     run_euler_disk,
 )
+from rollingdisk.model import geometry as eq
+from rollingdisk.util.errors import ParameterError
 
 
 @pytest.fixture(scope="module")
@@ -251,7 +251,7 @@ def test_bounded_work_statuses():
 def test_collapsing_steps_are_a_status(monkeypatch):
     """A right-hand side no step can resolve (v_Cx pushed back across 0 with +-1e3, a
     chattering switch): the run stops with "step sizes collapsed", it does not hang."""
-    import rollingdisk.euler_disk as ed
+    import rollingdisk.friction.euler_disk as ed
 
     rhs = ed._rhs
 
@@ -302,7 +302,7 @@ def test_plot_draws_fitted_and_predicted_slopes():
     matplotlib.use("Agg")
     from matplotlib.figure import Figure
 
-    from rollingdisk.plotting import plot_euler_disk
+    from rollingdisk.plotting.plots import plot_euler_disk
 
     r = run_euler_disk(EulerDisk(alpha0=0.05))
     out = plot_euler_disk(r, Figure())

@@ -1,4 +1,4 @@
-"""Exact motions (rollingdisk.exact) against independent truth: the sympy derivation (the
+"""Exact motions (rollingdisk.theory.exact) against independent truth: the sympy derivation (the
 structure the quadrature rests on), the thin-disk hypergeometric closed form, the linear
 frequency varpi of section 4, conservation of energy (eq. 13), and long simulations at
 rtol = atol = 1e-12 with extrema found on the dense output."""
@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from scipy.optimize import brentq
 
 import rollingdisk as rd
-from rollingdisk.exact import (
+from rollingdisk.theory.exact import (
     EXACT_STATUSES,
     backbone,
     exact_motion,

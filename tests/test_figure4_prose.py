@@ -20,7 +20,7 @@ import pytest
 
 import rollingdisk as rd
 from rollingdisk import oscillation_frequency, varpi2_rough_rC
-from rollingdisk.steady import r_C_star
+from rollingdisk.theory.steady import r_C_star
 
 H = 0.17
 TH_SE = math.atan(H)

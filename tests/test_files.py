@@ -1,4 +1,4 @@
-"""Outputs complete or absent: concurrent runs into one folder (rollingdisk._files)."""
+"""Outputs complete or absent: concurrent runs into one folder (rollingdisk.util.files)."""
 
 import json
 import multiprocessing
@@ -6,7 +6,7 @@ import os
 
 import pytest
 
-from rollingdisk._files import atomic_dir
+from rollingdisk.util.files import atomic_dir
 
 
 def _swap_many(base, i, n):
@@ -39,7 +39,7 @@ def test_a_swallowed_signal_still_stops_the_commit(tmp_path):
     before the rename (CI caught an atlas that finished after Ctrl-C this way)."""
     import signal as sig
 
-    from rollingdisk._files import _PENDING, atomic_dir, atomic_file, terminate_as_exception
+    from rollingdisk.util.files import _PENDING, atomic_dir, atomic_file, terminate_as_exception
 
     with terminate_as_exception():
         _PENDING.append(sig.SIGINT)  # as the handler does when its exception is swallowed

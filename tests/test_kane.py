@@ -2,7 +2,7 @@
 
 ``kane_model`` derives the dynamics with ``sympy.physics.mechanics.KanesMethod`` without the
 contact force (non-contributing), from an inertia integrated over the cylinder and a contact
-point found as the lowest rim point.  Here it is compared with ``rollingdisk.equations``:
+point found as the lowest rim point.  Here it is compared with ``rollingdisk.model.equations``:
 eqs. (4), (10), (13), (37), (38), (49) and the contact force of eqs. (8), (11).
 """
 

@@ -5,9 +5,9 @@ import subprocess
 import sys
 from pathlib import Path
 
-CORE = ["rollingdisk", "rollingdisk.disk", "rollingdisk.equations", "rollingdisk.steady",
-        "rollingdisk._stability", "rollingdisk._simulate", "rollingdisk.regions",
-        "rollingdisk.exact", "rollingdisk.euler_disk"]
+CORE = ["rollingdisk", "rollingdisk.model.disk", "rollingdisk.model.equations", "rollingdisk.theory.steady",
+        "rollingdisk.theory.oscillations", "rollingdisk.integrate.simulation", "rollingdisk.theory.regions",
+        "rollingdisk.theory.exact", "rollingdisk.friction.euler_disk"]
 SRC = str(Path(__file__).resolve().parents[1] / "src")
 
 

@@ -2,7 +2,7 @@
 
 import pytest
 
-from rollingdisk.cli import main
+from rollingdisk.cli.main import main
 
 pytest.importorskip("xarray")
 pytest.importorskip("matplotlib")

@@ -25,7 +25,7 @@ from rollingdisk import (
     varpi2_circle,
     varpi2_linearized,
 )
-from rollingdisk.steady import Omega0_sq, r_C_star, se_circle_radius, steady_motion
+from rollingdisk.theory.steady import Omega0_sq, r_C_star, se_circle_radius, steady_motion
 
 EPS = 1e-12
 

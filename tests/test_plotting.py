@@ -20,8 +20,8 @@ matplotlib.use("Agg")
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from rollingdisk import plotting  # noqa: E402
-from rollingdisk.regions import NO_MOTION, STABLE, UNSTABLE, varpi2_zero_surface  # noqa: E402
+from rollingdisk.plotting import plots as plotting
+from rollingdisk.theory.regions import NO_MOTION, STABLE, UNSTABLE, varpi2_zero_surface
 
 
 @pytest.fixture(autouse=True)
@@ -191,7 +191,7 @@ def test_plot_surface_labels():
 def test_paper_figures_low_resolution(tmp_path):
     from PIL import Image
 
-    from rollingdisk.figures import paper_figures
+    from rollingdisk.plotting.figures import paper_figures
 
     paths = paper_figures(tmp_path, scale=0.12, dpi=40)
     assert [p.name for p in paths] == [f"fig{i}.png" for i in range(4, 9)]
@@ -201,7 +201,7 @@ def test_paper_figures_low_resolution(tmp_path):
 
 
 def test_figure4_panels():
-    from rollingdisk.figures import FIGURE_HS, figure4
+    from rollingdisk.plotting.figures import FIGURE_HS, figure4
 
     fig = figure4(scale=0.15)
     assert len(fig.maps) == 4
@@ -213,7 +213,7 @@ def test_figure4_panels():
 
 
 def test_figure5_and_7_have_magnified_panel():
-    from rollingdisk.figures import figure5, figure7
+    from rollingdisk.plotting.figures import figure5, figure7
 
     for fig in (figure5(0.12), figure7(0.12)):
         main, zoom = fig.maps
@@ -221,7 +221,7 @@ def test_figure5_and_7_have_magnified_panel():
 
 
 def test_paper_figures_rejects_unknown(tmp_path):
-    from rollingdisk.figures import paper_figures
+    from rollingdisk.plotting.figures import paper_figures
 
     with pytest.raises(ValueError, match="fig4"):
         paper_figures(tmp_path, only=["fig3"])
@@ -230,8 +230,8 @@ def test_paper_figures_rejects_unknown(tmp_path):
 def test_plotting_imports_without_matplotlib():
     """matplotlib is imported only inside the plot functions."""
     code = ("import sys\nsys.modules['matplotlib'] = None\n"
-            "import rollingdisk.plotting, rollingdisk.animation, rollingdisk.figures, "
-            "rollingdisk.atlas\n")
+            "import rollingdisk.plotting.plots, rollingdisk.plotting.animation, rollingdisk.plotting.figures, "
+            "rollingdisk.atlas.build\n")
     src = str(Path(__file__).resolve().parents[1] / "src")
     env = {**os.environ, "PYTHONPATH": src}
     res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)

@@ -1,6 +1,6 @@
 """Robustness sweep of the command line (issue 8): bad input never gives a traceback.
 
-Sources of truth: the CLI contract of rollingdisk.cli (exit 2 and one line on stderr for
+Sources of truth: the CLI contract of rollingdisk.cli.main (exit 2 and one line on stderr for
 bad input, exit 1 only for a bug, 130/143 on Ctrl-C/SIGTERM), the library's contract for
 errors (TypeError/ValueError or their ParameterTypeError/ParameterError subclasses), strict
 JSON (no NaN, no infinity), and "every output is complete or absent" (nothing is left
@@ -27,7 +27,7 @@ import pytest  # noqa: E402
 from hypothesis import HealthCheck, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-from rollingdisk.cli import main  # noqa: E402
+from rollingdisk.cli.main import main
 
 SRC = str(Path(__file__).resolve().parents[1] / "src")
 
@@ -134,7 +134,7 @@ def test_figures_out_refuses_a_folder_with_other_files(tmp_path, capsys):
 
 def test_a_bug_is_exit_1_with_traceback(monkeypatch, capsys):
     """A ValueError that is not the library's input error is a bug, and says so."""
-    import rollingdisk._stability as stab
+    import rollingdisk.theory.oscillations as stab
 
     def broken(h):
         raise ValueError("internal inconsistency")
@@ -209,10 +209,10 @@ def command_lines(draw):
 @pytest.fixture
 def cheap_pictures(monkeypatch):
     """figures and atlas with tiny drawings (the sweep is about the arguments)."""
-    import rollingdisk.atlas as atlas
-    import rollingdisk.figures as figures
-    from rollingdisk._files import atomic_dir, check_replaceable
-    from rollingdisk.disk import check_h
+    import rollingdisk.atlas.build as atlas
+    import rollingdisk.plotting.figures as figures
+    from rollingdisk.model.disk import check_h
+    from rollingdisk.util.files import atomic_dir, check_replaceable
 
     def tiny(scale):
         from matplotlib.figure import Figure
@@ -225,7 +225,7 @@ def cheap_pictures(monkeypatch):
     def fake_atlas(h, out_dir, *, quick, progress):
         h = check_h(h)
         target = check_replaceable(out_dir, atlas.ATLAS_FILES, name="out_dir")
-        from rollingdisk.regions import example_motions
+        from rollingdisk.theory.regions import example_motions
 
         example_motions(h)
         with atomic_dir(target) as tmp:
@@ -269,7 +269,10 @@ def test_sweep_api_of_the_edges(tmp_path_factory, value, which):
     from matplotlib.figure import Figure
 
     import rollingdisk as rd
-    from rollingdisk import animation, atlas, figures, plotting
+    from rollingdisk.atlas import build as atlas
+    from rollingdisk.plotting import plots as plotting
+    from rollingdisk.plotting import animation as animation
+    from rollingdisk.plotting import figures as figures
 
     out = tmp_path_factory.mktemp("api")
     calls = {

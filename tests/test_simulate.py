@@ -35,8 +35,8 @@ from rollingdisk import (
     simulate_steady,
     stability,
 )
-from rollingdisk.equations import _rough_rhs, _smooth_rhs, contact_force
-from rollingdisk.steady import steady_motion, straight_line
+from rollingdisk.model.equations import _rough_rhs, _smooth_rhs, contact_force
+from rollingdisk.theory.steady import steady_motion, straight_line
 from steady_numeric import steady_omega20, varpi2_numeric
 
 THETA = {"rough": 3, "smooth": 5}
@@ -48,7 +48,7 @@ def compiled():
 
 
 def circle(ground, h, theta0, omega30):
-    """The steady circle of rollingdisk.steady with spin component omega30 (eq. 3)."""
+    """The steady circle of rollingdisk.theory.steady with spin component omega30 (eq. 3)."""
     m = steady_motion(Disk(h=h), ground, theta0, Omega0=omega30 / math.cos(theta0))
     # its omega20 makes d omega1/dt = 0, found independently (tests/steady_numeric.py)
     assert m.omega20 == pytest.approx(steady_omega20(h, ground, theta0, m.omega30),
@@ -209,7 +209,7 @@ def test_compiled_integrator_takes_the_same_steps_as_scipy(ground, y0, h):
 def test_compiled_rhs_matches_the_numpy_kernels():
     import sys
 
-    core = sys.modules["rollingdisk._numba_core"]
+    core = sys.modules["rollingdisk.integrate.numba_core"]
     rng = np.random.default_rng(7)
     for _ in range(50):
         h = rng.uniform(0, 2)
@@ -517,7 +517,7 @@ def test_missing_scipy_dop853_coefficients_give_a_clear_import_error():
             "del ivp.dop853_coefficients\n"
             "sys.modules['scipy.integrate._ivp.dop853_coefficients'] = None\n"
             "try:\n"
-            "    import rollingdisk._numba_core\n"
+            "    import rollingdisk.integrate.numba_core\n"
             "except ImportError as exc:\n"
             "    print(exc)\n")
     src = os.path.dirname(os.path.dirname(rollingdisk.__file__))
@@ -582,7 +582,7 @@ STEADY_ROWS = [
 @pytest.mark.parametrize("row", STEADY_ROWS, ids=str)
 def test_simulation_confirms_the_stability_module(row):
     """Closed-form varpi^2 of rollingdisk.stability vs the simulated motion (both ways)."""
-    from rollingdisk.steady import steady_motion, straight_line
+    from rollingdisk.theory.steady import steady_motion, straight_line
 
     ground, h, theta0, kind, value = row
     disk = Disk(h=h)

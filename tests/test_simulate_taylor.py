@@ -1,7 +1,7 @@
 """``simulate(method="taylor")``: the series against the numpy right-hand side, whole runs
 against DOP853, guards, steady motions, energy, and bad input.
 
-Sources of truth: the kernels of :mod:`rollingdisk.equations` (the first coefficient is
+Sources of truth: the kernels of :mod:`rollingdisk.model.equations` (the first coefficient is
 the right-hand side, the second half its derivative along the flow, computed here by a
 complex step through those kernels), an independent tight ``solve_ivp`` on the numpy
 right-hand side, DOP853 at tight tolerance, eq. (13) (energy), and the steady motions of
@@ -18,13 +18,13 @@ from scipy.integrate import solve_ivp
 
 import rollingdisk as rd
 from rollingdisk import Disk, energy_drift, equations_of_motion, simulate
-from rollingdisk.errors import ParameterError
+from rollingdisk.util.errors import ParameterError
 
 
 @pytest.fixture(scope="module")
 def core():
     rd.jit_compile()
-    from rollingdisk import _simulate
+    from rollingdisk.integrate import simulation as _simulate
 
     return _simulate._core
 
@@ -60,7 +60,7 @@ def test_first_two_coefficients_are_the_rhs_and_its_flow_derivative(core, case):
     f0 = f(0.0, y)
     assert np.allclose(J[:, 1], f0, rtol=1e-13, atol=1e-13)
     # y'' = (df/dy) f, by a complex step through the numpy kernels: 2 J_2 = y''
-    from rollingdisk import equations as eq
+    from rollingdisk.model import equations as eq
 
     kernel = eq._rough_rhs if ground == "rough" else eq._smooth_rhs
     eps = 1e-30
@@ -169,7 +169,7 @@ def test_taylor_options_and_bad_input():
 def test_cli_method_taylor(capsys):
     import json
 
-    from rollingdisk.cli import main
+    from rollingdisk.cli.main import main
 
     argv = ["simulate", "--method", "taylor", "--h", "0.1", "--theta0", "0.3", "--Omega0", "2",
             "--kick", "0.01", "--t-end", "100", "--rtol", "1e-12", "--atol", "1e-12", "--json"]
@@ -182,13 +182,13 @@ def test_cli_method_taylor(capsys):
 
 
 def _heyoka_rough_system(h):
-    """heyoka's ODE from the kernels of rollingdisk.equations (their ``np`` bound to
+    """heyoka's ODE from the kernels of rollingdisk.model.equations (their ``np`` bound to
     heyoka's sin/cos; ``sgn(theta) = 1``: the run below stays at theta > 0)."""
     import types
 
     import heyoka as hy
 
-    from rollingdisk import equations as eq
+    from rollingdisk.model import equations as eq
 
     class HeyokaNp:
         sin = staticmethod(hy.sin)
@@ -200,7 +200,7 @@ def _heyoka_rough_system(h):
     for name in ("_geometry", "_rough_omega_dot", "_rough_rhs"):
         f = eq.__dict__[name]
         ns[name] = types.FunctionType(f.__code__, ns, name)
-    xs = hy.make_vars(*eq.ROUGH_STATE)
+    xs = hy.make_vars(*rd.ROUGH_STATE)
     return list(zip(xs, ns["_rough_rhs"](h, xs)))
 
 

@@ -31,7 +31,7 @@ from rollingdisk import (
     varpi2_linearized,
     varpi2_rough_rC,
 )
-from rollingdisk.steady import r_C_star, steady_motion, straight_line
+from rollingdisk.theory.steady import r_C_star, steady_motion, straight_line
 
 
 def jac_scale(m) -> float:

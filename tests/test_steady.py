@@ -1,6 +1,6 @@
 """Steady motions (section 3) checked against the derived equations of motion.
 
-Source of truth: the reduced equations (38) / (49) in ``rollingdisk.equations`` (confirmed
+Source of truth: the reduced equations (38) / (49) in ``rollingdisk.model.equations`` (confirmed
 against a Newton-Euler derivation), the kinematics (1)-(2), the contact force (8), (11),
 and direct integration with scipy's ``solve_ivp``.
 """
@@ -17,7 +17,7 @@ from scipy.integrate import solve_ivp
 
 from conftest import SIGN, THETA, H
 from rollingdisk import Disk, contact_force, contact_point, equations_of_motion, omega_dot
-from rollingdisk.steady import (
+from rollingdisk.theory.steady import (
     NoSteadyMotion,
     Omega0_sq,
     SteadyMotion,

@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 
 import rollingdisk as rd
-from rollingdisk.errors import ParameterError
+from rollingdisk.util.errors import ParameterError
 
-sweep = pytest.importorskip("rollingdisk.sweep")
+sweep = pytest.importorskip("rollingdisk.sweep.runner")
 
 
 def _small(ground="rough"):
@@ -44,7 +44,7 @@ def test_summaries_match_closed_form(ground):
 
 def test_reduced_energy_is_rollingdisk_energy():
     """The energy kept along a run is rollingdisk.energy of the full rough state."""
-    from rollingdisk import _sweep_core as core
+    from rollingdisk.integrate import batch as core
 
     y = np.array([0.1, -0.2, 0.0, 0.4, 0.3, 0.5, -1.2, 2.0])  # X, Y, psi, theta, phi, w1..3
     x = y[[3, 5, 6, 7]]
@@ -178,7 +178,7 @@ def test_grid_setup_is_steady_motion_and_stability_point_by_point(ground, second
     """The element-wise set-up of circles (eqs. 3, 28/34, 40/51 on whole chunks) against
     rollingdisk.steady_motion and rollingdisk.stability called at every point; NaN exactly
     where they refuse (Omega0 = 0; theta0 = 0 with h > 0)."""
-    from rollingdisk import _stability
+    from rollingdisk.theory import oscillations as _stability
 
     g = sweep.SweepGrid(ground, h=(0.0, 0.17), theta0=np.linspace(-1.4, 1.4, 9),
                         **{second: np.linspace(-6.0, 6.0, 9)})

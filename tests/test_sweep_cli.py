@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from rollingdisk.cli import main
+from rollingdisk.cli.main import main
 
 pytest.importorskip("xarray")
 
@@ -45,8 +45,8 @@ def test_sweep_plots():
     import matplotlib
 
     matplotlib.use("Agg")
-    from rollingdisk.plotting import plot_basin_map, plot_nonlinear_map
-    from rollingdisk.sweep import SweepGrid, basin_sweep, run_sweep
+    from rollingdisk.plotting.plots import plot_basin_map, plot_nonlinear_map
+    from rollingdisk.sweep.runner import SweepGrid, basin_sweep, run_sweep
 
     g = SweepGrid("rough", h=0.17, theta0=[0.4, 0.8, 1.2], omega30=[-4.0, 1.0, 4.0])
     out = plot_nonlinear_map(run_sweep(g, 10.0))

@@ -1,6 +1,6 @@
 """The batch Taylor kernel of the sweeps (``run_sweep(method="taylor")``, the default).
 
-Sources of truth: the numpy kernels of :mod:`rollingdisk.equations` (the first coefficient
+Sources of truth: the numpy kernels of :mod:`rollingdisk.model.equations` (the first coefficient
 of the reduced jet is the right-hand side, twice the second its derivative along the flow
 by a complex step, the normal force is eq. 11), an independent tight ``solve_ivp`` on the
 numpy reduced right-hand side, ``simulate`` (its own integrator and guard location) for
@@ -16,14 +16,14 @@ from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 
 import rollingdisk as rd
-from rollingdisk import equations as eq
+from rollingdisk.model import equations as eq
 
-sweep = pytest.importorskip("rollingdisk.sweep")
+sweep = pytest.importorskip("rollingdisk.sweep.runner")
 
 
 @pytest.fixture(scope="module")
 def nc():
-    from rollingdisk import _numba_core
+    from rollingdisk.integrate import numba_core as _numba_core
 
     return _numba_core
 
@@ -178,7 +178,7 @@ def test_taylor_and_dop853_kernels_give_the_same_summaries(ground):
 
 
 def test_method_is_checked():
-    from rollingdisk.errors import ParameterError
+    from rollingdisk.util.errors import ParameterError
 
     g = sweep.SweepGrid("rough", h=0.17, theta0=[0.5], omega30=[3.0])
     with pytest.raises(ParameterError, match="method"):

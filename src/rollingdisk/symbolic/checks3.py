@@ -199,7 +199,7 @@ def _after30_sign(pr):
 def _se_max():
     from scipy.optimize import minimize_scalar
 
-    from ..steady import se_circle_radius
+    from rollingdisk.theory.steady import se_circle_radius
 
     opt = minimize_scalar(lambda x: -se_circle_radius(x), bounds=(0, math.sqrt(3) / 2),
                           method="bounded", options={"xatol": 1e-12})
@@ -223,7 +223,7 @@ def _after30_theta0(pr):
 
 @check("text after (30) [limit]")
 def _after30_limit(pr):
-    from ..steady import se_circle_radius
+    from rollingdisk.theory.steady import se_circle_radius
 
     return _quoted(pr, se_circle_radius(1e8), 1e-6, "(30) at h = 1e8")
 
@@ -269,7 +269,7 @@ def _theta_grid():
 def _after32_max(pr):
     import numpy as np
 
-    from ..steady import r_C_star
+    from rollingdisk.theory.steady import r_C_star
 
     grid = r_C_star(0.7, _theta_grid())
     at0 = float(r_C_star(0.7, 0.0))
@@ -286,14 +286,14 @@ def _after32_max(pr):
 def _after32_min(pr):
     import numpy as np
 
-    from ..steady import r_C_star
+    from rollingdisk.theory.steady import r_C_star
 
     return _quoted(pr, float(np.min(r_C_star(0.0, _theta_grid()))), 1e-9, "grid minimum")
 
 
 @check("text after (32) [zeros]")
 def _after32_zeros(pr):
-    from ..steady import r_C_star
+    from rollingdisk.theory.steady import r_C_star
 
     end = abs(float(r_C_star(0.7, math.pi / 2 - 1e-9)))  # -> 0 as theta0 -> pi/2
 
@@ -309,7 +309,7 @@ def _after32_zeros(pr):
 def _after32_great_h(pr):
     import numpy as np
 
-    from ..steady import r_C_star
+    from rollingdisk.theory.steady import r_C_star
 
     low = float(np.min(r_C_star(1e6, _theta_grid())))
 

@@ -158,7 +158,7 @@ def _boundary(ground: str, h0: float) -> float:
     """Left boundary in theta0 of the region stable for every omega30 (library)."""
     from scipy.optimize import brentq
 
-    from .._stability import stable_for_all_omega30
+    from rollingdisk.theory.oscillations import stable_for_all_omega30
 
     return brentq(lambda t: float(stable_for_all_omega30(h0, ground, t)) - 0.5, 0.05, 0.7,
                   xtol=1e-15)
@@ -170,7 +170,7 @@ def _right_boundary(ground: str, h0: float) -> float:
     import numpy as np
     from scipy.optimize import brentq
 
-    from .._stability import stable_for_all_omega30
+    from rollingdisk.theory.oscillations import stable_for_all_omega30
 
     th = np.linspace(1e-6, math.pi / 2 - 1e-10, 100001)
     i = int(np.nonzero(~stable_for_all_omega30(h0, ground, th))[0].max())
@@ -183,7 +183,7 @@ def _sup_critical(ground: str) -> float:
     """Sup of the varpi^2 = 0 surface omega30^2 over h in [0, 1e4], theta0 in [0, pi/2)."""
     import numpy as np
 
-    from .._stability import critical_omega30_sq
+    from rollingdisk.theory.oscillations import critical_omega30_sq
 
     H = np.concatenate([np.linspace(0, 5, 501), np.geomspace(5, 1e4, 200)])[:, None]
     T = np.concatenate([[0.0], np.linspace(1e-4, math.pi / 2 - 1e-4, 1500)])[None, :]
@@ -225,7 +225,7 @@ def _eq47(pr):
 
 @check("text before Fig. 6")
 def _before_fig6(pr):
-    from .._stability import varpi2_circle
+    from rollingdisk.theory.oscillations import varpi2_circle
 
     value = float(varpi2_circle(1e6, "rough", 0.0, 1.3))
     return _quoted(pr, value, 1e-5 * abs(value), "varpi^2 at h = 1e6, theta0 = 0, omega30 = 1.3 "
@@ -240,7 +240,7 @@ def _before_fig6_conclusion(pr):
 
 @check("(48)")
 def _eq48(pr):
-    from .._stability import varpi2_circle
+    from rollingdisk.theory.oscillations import varpi2_circle
 
     t = math.pi / 2 - 1e-7
     ratio = float(varpi2_circle(2.0, "rough", t, 0.7)) / (0.49 * math.tan(t) ** 2)
@@ -333,7 +333,7 @@ def _after59_tan(pr):
 
 @check("text after (59) [omega30]")
 def _after59_omega30(pr):
-    from .._stability import critical_omega30_sq
+    from rollingdisk.theory.oscillations import critical_omega30_sq
 
     _, hi = critical_omega30_sq(0.0, "smooth", _boundary("smooth", 0.0) - 1e-9)
     return _quoted(pr, math.sqrt(float(hi)), 5e-4, "double root of (58) at the boundary")
@@ -341,7 +341,7 @@ def _after59_omega30(pr):
 
 @check("text before Conclusion [h = 0]")
 def _before_conclusion_h0(pr):
-    from .._stability import critical_omega30_sq
+    from rollingdisk.theory.oscillations import critical_omega30_sq
 
     _, hi = critical_omega30_sq(0.0, "smooth", 0.0)
     return _quoted(pr, math.sqrt(float(hi)), 1e-9, "varpi^2 = 0 surface at theta0 -> 0+")
@@ -349,7 +349,7 @@ def _before_conclusion_h0(pr):
 
 @check("text before Conclusion [h = 1/2]")
 def _before_conclusion_half(pr):
-    from .._stability import critical_omega30_sq
+    from rollingdisk.theory.oscillations import critical_omega30_sq
 
     _, hi = critical_omega30_sq(0.5, "smooth", 0.0)
     none_above = all(math.isnan(float(critical_omega30_sq(x, "smooth", 0.0)[1]))

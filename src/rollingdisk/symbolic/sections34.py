@@ -229,7 +229,7 @@ def write_errata(path) -> None:
     """Replace everything after :data:`MARKER` in the file ``path`` by :func:`errata_markdown`."""
     from pathlib import Path
 
-    from .._files import atomic_file
+    from rollingdisk.util.files import atomic_file
 
     path = Path(path)
     text = path.read_text()

@@ -1,0 +1,605 @@
+"""The atlas of one disk: thresholds, maps, two simulated steady motions, one HTML page.
+
+:func:`build_atlas` is the orchestration behind ``rollingdisk atlas``: for a disk of
+half-thickness ``h`` it writes into a folder
+
+* ``thresholds.json`` and a table of the stability thresholds (eqs. 42, 43, 53, 57 as
+  corrected in :mod:`rollingdisk.theory.oscillations`),
+* existence maps (rough ground: ``(theta0, r_C)``, Figure 4 style; smooth ground: C at
+  rest), stability maps in ``(theta0, omega30)`` on both grounds, and the regions stable
+  for every ``omega30`` (Figures 5, 7) with this disk's ``h`` marked,
+* one stable and one unstable steady circle on rough ground, simulated from a small tilt
+  perturbation, with their plots (paths of C and P, ``theta(t)``, energy error, contact
+  force) and a 3D animation each,
+* Euler's disk: the commercial toy (:mod:`rollingdisk.friction.euler_disk`, its own ``h = 0.169``)
+  run to its end with creep friction and rolling resistance, with the fitted and the
+  predicted exponents (run in a second process alongside the other steps),
+* ``index.html`` showing it all, with relative image paths and no external resources.
+
+It sits outside the numeric core (uses matplotlib through :mod:`rollingdisk.plotting.plots`).
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import math
+import os
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from rollingdisk.model.disk import DEFAULT_H, Disk, check_h
+from rollingdisk.util.checks import check_real
+from rollingdisk.util.files import atomic_dir, check_replaceable
+
+__all__ = ["AtlasResult", "ATLAS_FILES", "build_atlas", "steady_trajectory"]
+
+#: The files of an atlas folder (the folder is written as a whole, see :func:`build_atlas`).
+ATLAS_FILES = ("thresholds.json", "existence.png", "stability.png", "varpi2.png",
+               "all_omega30.png", "motion_stable.png", "motion_stable.gif",
+               "motion_unstable.png", "motion_unstable.gif", "exact.png", "euler_disk.png",
+               "euler_disk.json", "index.html")
+
+
+@dataclass(frozen=True)
+class AtlasResult:
+    """What :func:`build_atlas` wrote.
+
+    Attributes
+    ----------
+    out_dir : Path
+    index : Path
+        The ``index.html`` page.
+    files : tuple of Path
+        Every file written (images, animations, JSON), index excluded.
+    h : float
+    timings : dict
+        Wall time in seconds of each step.
+    motions : dict
+        ``{"stable": {...}, "unstable": {...}}``: the chosen steady motions, their
+        closed-form stability and what the simulation showed.
+    """
+
+    out_dir: Path
+    index: Path
+    files: tuple
+    h: float
+    timings: dict = field(default_factory=dict)
+    motions: dict = field(default_factory=dict)
+
+
+class _Progress:
+    """Progress lines on a stream (stderr by default): ``[k/n] step ... 1.2 s``."""
+
+    def __init__(self, n_steps: int, stream=None, enabled: bool = True):
+        self.n = n_steps
+        self.k = 0
+        self.stream = sys.stderr if stream is None else stream
+        self.enabled = enabled
+        self.t0 = time.perf_counter()
+        self.timings: dict[str, float] = {}
+
+    def step(self, name: str):
+        self.k += 1
+        self._name = name
+        self._t = time.perf_counter()
+        if self.enabled:
+            print(f"[{self.k}/{self.n}] {name} ...", end="", file=self.stream, flush=True)
+
+    def abort(self):
+        """End the open progress line (the run was interrupted or failed)."""
+        if self.enabled and getattr(self, "_t", None) is not None:
+            print(file=self.stream, flush=True)
+        self._t = None
+
+    def done(self, note: str = ""):
+        dt = time.perf_counter() - self._t
+        self.timings[self._name] = dt
+        self._t = None
+        if self.enabled:
+            extra = f" ({note})" if note else ""
+            print(f" {dt:.1f} s{extra}", file=self.stream, flush=True)
+
+    def total(self) -> float:
+        return time.perf_counter() - self.t0
+
+
+# ------------------------------------------------------------------------------ motions
+def steady_trajectory(h: float, ground: str, theta0: float, *, Omega0: float | None = None,
+                      r_C: float | None = None, r_P: float | None = None,
+                      perturb: float = 0.0, kick: float = 0.0, t_end: float = 20.0,
+                      n_out: int = 1200):
+    """Build the steady motion of eqs. (26)-(35) and simulate it from a small disturbance.
+
+    ``perturb`` is added to ``theta(0)``, ``kick`` to ``omega1(0) = d theta/dt``.  A tilt
+    alone moves the disk onto a neighbouring steady motion, about which it then oscillates
+    (eq. 39 has a constant right-hand side then); a kick ``omega1`` keeps the oscillation
+    centred on ``theta0`` (linear theory: ``omega~2 - c theta~`` is conserved, eq. 39).
+    The trajectory is sampled at ``n_out`` equally spaced times in ``[0, t_end]``.
+
+    Returns ``(motion, stability, trajectory)``.
+    """
+    from rollingdisk.integrate.simulation import simulate_steady
+    from rollingdisk.theory.oscillations import stability
+    from rollingdisk.theory.steady import steady_motion
+
+    motion = steady_motion(Disk(h), ground, theta0, Omega0=Omega0, r_C=r_C, r_P=r_P)
+    t_end = check_real("t_end", t_end, low=0.0, low_open=True)
+    traj = simulate_steady(motion, t_end, perturb=perturb, kick=kick,
+                           t_eval=np.linspace(0.0, t_end, max(2, int(n_out))))
+    return motion, stability(motion), traj
+
+
+# ------------------------------------------------------------------------------ atlas
+def _save(fig, path: Path, dpi: int, files: list):
+    fig.savefig(path, dpi=dpi)
+    files.append(path)
+    return path
+
+
+def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
+                progress: bool = True, stream=None) -> AtlasResult:
+    """Write the atlas of the disk of half-thickness ``h`` into ``out_dir``.
+
+    The folder is built under a temporary name beside ``out_dir`` and swapped in at the
+    end (:func:`rollingdisk.util.files.atomic_dir`): it appears whole or not at all, its
+    ``index.html`` and ``thresholds.json`` always describe the same disk, and of two runs
+    into the same folder the one that finishes last leaves its whole atlas.  An existing
+    ``out_dir`` is replaced only if it holds nothing but atlas files (:data:`ATLAS_FILES`).
+
+    Parameters
+    ----------
+    h : float
+        Half-thickness in units of the radius, ``0 <= h <= 1e8`` (default
+        :data:`rollingdisk.model.disk.DEFAULT_H` = 0.17, about a commercial Euler's disk).
+    out_dir : path-like
+        Folder to write; its parent folder must exist.
+    quick : bool
+        Coarse grids, short simulations and few animation frames (for tests).
+    progress : bool
+        Print one line per step on ``stream`` (stderr by default).
+    stream : file-like, optional
+        Where the progress lines go.
+
+    Returns
+    -------
+    AtlasResult
+        The paths written (in ``out_dir``), the timings and the two simulated motions.
+
+    Raises
+    ------
+    ParameterError
+        For a bad ``h``, an ``out_dir`` that cannot be written or holds other files, or a
+        disk with no unstable steady circle to show (all before any file is written).
+    """
+    from rollingdisk.theory.regions import example_motions
+
+    h = check_h(h)
+    target = check_replaceable(out_dir, ATLAS_FILES, name="out_dir")
+    chosen = example_motions(h)  # before any work: fails for a disk with no unstable circle
+    pr = _Progress(9, stream=stream, enabled=bool(progress))
+    try:
+        with atomic_dir(target) as out:
+            files, motions = _write_atlas(h, out, chosen, quick=bool(quick), pr=pr)
+    except BaseException:
+        pr.abort()  # the message that follows gets a line of its own
+        raise
+    index = target / "index.html"
+    if progress:
+        print(f"atlas written to {index} in {pr.total():.1f} s", file=pr.stream, flush=True)
+    return AtlasResult(target, index, tuple(target / p.name for p in files), h,
+                       dict(pr.timings), motions)
+
+
+def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[list, dict]:
+    """The steps of :func:`build_atlas`, writing into the (temporary) folder ``out``.
+
+    Returns the paths written (index excluded) and the records of the motions."""
+    files: list[Path] = []
+    dpi = 60 if quick else 90
+    n_map = (60, 50) if quick else (220, 180)
+    # Euler's disk runs for seconds on its own: started first, in a second process, and
+    # collected after the exact motion (step 8), so the atlas does not wait for it
+    euler = _start_child(_euler_disk_in_child, (out, quick, dpi))
+    try:
+        return _write_atlas_steps(h, out, chosen, quick=quick, pr=pr, files=files, dpi=dpi,
+                                  n_map=n_map, euler=euler)
+    finally:
+        if euler.is_alive():  # interrupted or failed: stop the helper (the folder is dropped)
+            euler.terminate()
+            euler.join()
+
+
+def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
+    """The steps of :func:`_write_atlas`, with the Euler's-disk helper process running."""
+    from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
+
+    from rollingdisk.plotting import plots as plotting
+    from rollingdisk.plotting.animation import animate
+    from rollingdisk.theory.oscillations import thresholds
+    from rollingdisk.theory.regions import STABLE
+
+    # 1. thresholds ------------------------------------------------------------------
+    pr.step("thresholds")
+    thr = thresholds(h).as_dict()
+    (out / "thresholds.json").write_text(
+        json.dumps({"h": h, **_floats(thr)}, indent=2, allow_nan=False))
+    files.append(out / "thresholds.json")
+    pr.done()
+
+    # 2. existence maps -------------------------------------------------------------
+    pr.step("existence maps")
+    fig = Figure(figsize=(10.0, 4.2))
+    axs = fig.subplots(1, 2)
+    m_ex = plotting.plot_existence_map(h, "rough", axs[0], n=n_map,
+                                       title=f"rough ground, $h={h:.4g}$")
+    plotting.plot_existence_map(h, "smooth", axs[1], n=(n_map[0], 40),
+                                title=f"smooth ground, $h={h:.4g}$")
+    fig.tight_layout()
+    _save(fig, out / "existence.png", dpi, files)
+    pr.done(f"stable share {m_ex.share(STABLE):.2f}")
+
+    # 3. stability maps -----------------------------------------------------------------
+    pr.step("stability maps")
+    fig = Figure(figsize=(10.0, 4.2))
+    axs = fig.subplots(1, 2)
+    for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
+        plotting.plot_stability_map(h, ground, ax, n=n_map,
+                                    omega30_max=2.0 if ground == "rough" else 2.5)
+    fig.tight_layout()
+    _save(fig, out / "stability.png", dpi, files)
+    fig = Figure(figsize=(10.0, 3.8))
+    axs = fig.subplots(1, 2)
+    for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
+        plotting.plot_varpi2_curves(h, ground, ax, n=120 if quick else 400)
+    fig.tight_layout()
+    _save(fig, out / "varpi2.png", dpi, files)
+    pr.done()
+
+    # 4. stable for every omega30 --------------------------------------------------------
+    pr.step("regions stable for every omega30")
+    fig = Figure(figsize=(10.0, 4.2))
+    axs = fig.subplots(1, 2)
+    h_top = max(1.5, 2.0 * h)
+    for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
+        plotting.plot_all_omega30_stable(ground, ax, n=n_map, h_range=(0.0, h_top),
+                                         mark_h=h)
+    fig.tight_layout()
+    _save(fig, out / "all_omega30.png", dpi, files)
+    pr.done()
+
+    # (no compile step: the two short runs below run the integrator uncompiled, so a cold
+    # atlas never waits for numba; see docs/simulation.md)
+    # 6./7. two steady motions, simulated; the first animation is drawn in a second process
+    # while this one goes on (the two cores of a laptop), the second one here
+    motions = {}
+    helpers = []
+    try:
+        for kind in ("stable", "unstable"):
+            pr.step(f"{kind} steady circle: simulate, plot, animate")
+            chosen_motion = getattr(chosen, kind)
+            theta0, Omega0 = chosen_motion.theta0, chosen_motion.Omega0
+            t_end = 12.0 if quick else 30.0
+            kick = 0.05 if kind == "stable" else 1e-4
+            motion, stab, traj = steady_trajectory(h, "rough", theta0, Omega0=Omega0,
+                                                   kick=kick, t_end=t_end,
+                                                   n_out=300 if quick else 1500)
+            fig = Figure(figsize=(9.0, 6.5))
+            plotting.plot_trajectory(traj, fig, theta0=theta0,
+                                     title=f"{kind} steady circle, rough ground, h = {h:.4g}")
+            _save(fig, out / f"motion_{kind}.png", dpi, files)
+            gif = out / f"motion_{kind}.gif"
+            kw = dict(n_frames=6 if quick else 60, fps=12, dpi=55 if quick else 70,
+                      title=f"{kind} circle, h = {h:.4g}")
+            if kind == "stable" and (os.cpu_count() or 1) > 1:
+                helpers.append(_start_animation(traj, gif, kw))
+            else:
+                animate(traj, gif, **kw)
+            files.append(gif)
+            motions[kind] = _motion_record(motion, stab, traj, kick)
+            pr.done(f"status {motions[kind]['status']}")
+        # 8. the stable circle's exact motion at finite amplitude (while the helper draws)
+        pr.step("exact motion: quadrature, rosette, backbone")
+        motions["exact"] = _exact_section(chosen.stable, out, dpi, files)
+        pr.done(f"period {motions['exact']['period']:.6g}")
+        # 9. Euler's disk, run alongside since the start
+        pr.step("Euler's disk (run alongside)")
+        euler.join()
+        if euler.exitcode != 0:
+            raise RuntimeError(f"the Euler's disk process ended with exit code "
+                               f"{euler.exitcode}")
+        motions["euler_disk"] = json.loads((out / "euler_disk.json").read_text())
+        files += [out / "euler_disk.png", out / "euler_disk.json"]
+        ed = motions["euler_disk"]
+        pr.done(f"{ed['end']} at {ed['t_end_s']:.4g} s")
+        for proc in helpers:
+            proc.join()
+            if proc.exitcode != 0:
+                raise RuntimeError(f"the animation process ended with exit code "
+                                   f"{proc.exitcode}")
+    finally:
+        for proc in helpers:  # interrupted: stop the helper too (the folder is dropped)
+            if proc.is_alive():
+                proc.terminate()
+                proc.join()
+
+    # 10. index page ------------------------------------------------------------------------
+    pr.step("index.html")
+    (out / "index.html").write_text(_index_html(h, thr, motions, [p.name for p in files]),
+                                    encoding="utf-8")
+    pr.done()
+    return files, motions
+
+
+def _exact_section(motion, out: Path, dpi: int, files: list) -> dict:
+    """The exact motion about the stable circle, kicked hard (a finite amplitude), with its
+    backbone curve (:mod:`rollingdisk.theory.exact`)."""
+    from matplotlib.figure import Figure
+
+    from rollingdisk.plotting import plots as plotting
+    from rollingdisk.theory import exact as exact
+    from rollingdisk.theory.oscillations import stability
+
+    varpi = stability(motion).varpi
+    kicks = np.linspace(0.01, 1.0, 25) * varpi * 0.3
+    bb = exact.backbone(motion, kicks)
+    ok = np.nonzero(np.isfinite(bb.period))[0]
+    kick = float(kicks[ok[len(ok) // 2]])
+    ex = exact.exact_steady(motion, kick=kick)
+    fig = Figure(figsize=(12.6, 4.0))
+    plotting.plot_exact(ex, fig, backbone=bb, n_periods=20,
+                        title=f"exact motion about the stable circle, kick {kick:.3g}")
+    _save(fig, out / "exact.png", dpi, files)
+    return {"kick": kick, "theta_min": ex.theta_min, "theta_max": ex.theta_max,
+            "period": ex.period, "linear_period": 2.0 * math.pi / varpi,
+            "delta_psi": ex.delta_psi, "status": ex.status,
+            "largest_amplitude": float(np.nanmax(bb.amplitude)),
+            "frequency_at_largest": float(bb.frequency[ok[-1]]), "varpi": varpi}
+
+
+def _start_animation(traj, path, kw):
+    """Start :func:`rollingdisk.plotting.animation.animate` in a child process (written atomically
+    there); returns the process."""
+    return _start_child(_animate_in_child, (traj, path, kw))
+
+
+def _start_child(target, args):
+    """Start ``target(*args)`` in a daemon child process; returns the process."""
+    import multiprocessing
+
+    proc = multiprocessing.Process(target=target, args=args, daemon=True)
+    proc.start()
+    return proc
+
+
+def _quiet_signals():
+    """In a helper: a Ctrl-C or SIGTERM reaches the whole process group; the child ignores
+    SIGINT (the parent stops it) and dies quietly on SIGTERM, so the user sees the parent's
+    one line and never the child's traceback."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
+def _animate_in_child(traj, path, kw):
+    """The animation helper's body (see :func:`_quiet_signals`)."""
+    from rollingdisk.plotting.animation import animate
+
+    _quiet_signals()
+    animate(traj, path, **kw)
+
+
+def _euler_disk_in_child(out: Path, quick: bool, dpi: int):
+    """The Euler's-disk helper's body: the toy run to its end (``quick``: started at
+    ``alpha0 = 0.05``, a short run), ``euler_disk.png`` and ``euler_disk.json`` in ``out``
+    (the atlas's temporary folder; the JSON last, as the sign that both are whole)."""
+    from matplotlib.figure import Figure
+
+    from rollingdisk.friction.euler_disk import EulerDisk, run_euler_disk
+    from rollingdisk.plotting.plots import plot_euler_disk
+
+    _quiet_signals()
+    result = run_euler_disk(EulerDisk(alpha0=0.05 if quick else 0.3), max_wall_time=60.0)
+    fig = Figure(figsize=(10.0, 4.2))
+    plot_euler_disk(result, fig, title="Euler's disk: " + result.message)
+    fig.savefig(out / "euler_disk.png", dpi=dpi)
+    (out / "euler_disk.json").write_text(json.dumps(result.summary(), indent=2,
+                                                    allow_nan=False))
+
+
+def _floats(d):
+    if isinstance(d, dict):
+        return {k: _floats(v) for k, v in d.items()}
+    return float(d)
+
+
+def _motion_record(motion, stab, traj, kick) -> dict:
+    from rollingdisk.integrate.measure import compare_with_theory
+    from rollingdisk.plotting.plots import trajectory_series
+
+    theta = trajectory_series(traj, "theta")
+    E = trajectory_series(traj, "E")
+    measured = compare_with_theory(traj, stab).measured  # the CLI's rule for the linear range
+    return {
+        "theta0": float(motion.theta0), "Omega0": float(motion.Omega0),
+        "omega20": float(motion.omega20), "omega30": float(motion.omega30),
+        "r_C": float(motion.r_C), "r_P": float(motion.r_P),
+        **stab.as_dict(),
+        "measured": None if measured is None else float(measured),
+        "kick": float(kick), "status": traj.status,
+        "t_end": float(np.asarray(traj.t)[-1]),
+        "max_theta_dev": float(np.max(np.abs(theta - motion.theta0))),
+        "energy_error": float(np.max(np.abs(E - E[0]))),  # absolute, units of m g a
+    }
+
+
+_CSS = """body{font-family:sans-serif;max-width:1050px;margin:2em auto;padding:0 1em;
+color:#222;line-height:1.45}h1{font-size:1.6em}h2{border-bottom:1px solid #ccc;
+padding-bottom:.2em;margin-top:1.8em}table{border-collapse:collapse;margin:.8em 0}
+td,th{border:1px solid #bbb;padding:.25em .6em;text-align:right}th{background:#eee}
+td:first-child,th:first-child{text-align:left}img{max-width:100%;border:1px solid #ddd}
+.pair{display:flex;gap:1em;flex-wrap:wrap;align-items:flex-start}.note{color:#555;
+font-size:.92em}code{background:#f4f4f4;padding:0 .2em}"""
+
+
+def _fmt(x, nd=4):
+    if x is None:
+        return "&ndash;"
+    if isinstance(x, bool):
+        return "yes" if x else "no"
+    return f"{x:.{nd}g}"
+
+
+def _euler_block(ed: dict) -> str:
+    """The section "Euler's disk" of the index page, from the run's JSON summary."""
+    p = ed["parameters"]
+    rows = "\n".join(
+        f"<tr><td>{name}</td><td>{_fmt(ed['exponents'][key])}</td>"
+        f"<td>{_fmt(ed['predicted'][key])}</td></tr>"
+        for key, name in (("alpha", "tilt &alpha;"), ("Omega", "precession rate &Omega;"),
+                          ("contact_speed", "contact-point speed")))
+    lo, hi = ed["fit_window_alpha"]
+    return f"""<h2>Euler's disk</h2>
+<p>The commercial toy (radius {p['radius_m'] * 1e3:.4g} mm, thickness
+{p['thickness_m'] * 1e3:.4g} mm, so h = {p['h']:.4g}; mass {p['mass_kg']:.3g} kg) started on
+its spin-in-place steady motion at tilt &alpha;<sub>0</sub> = &pi;/2 &minus; &theta;<sub>0</sub>
+= {p['alpha0']:.3g} rad and run to its end with creep friction (&mu; = {p['mu']:.3g}, creep
+coefficient {p['creep']:.4g}) and rolling resistance (length {p['rolling_resistance']:.3g}
+a); <code>rollingdisk euler-disk</code>, <code>docs/friction.md</code>. End: <b>{ed['end']}</b>
+at t = {_fmt(ed['t_end_s'])} s (status <code>{html.escape(ed['status'])}</code>; the adiabatic
+decay along the steady family predicts {_fmt(ed['predicted_t_end_s'])} s); energy
+balance {_fmt(ed['energy_balance'], 2)}; {ed['n_steps']} steps in {ed['wall_time_s']:.1f} s.
+Exponents against t<sub>0</sub> &minus; t over &alpha; in ({lo:g}, {hi:g}), fitted with
+t<sub>0</sub> = {_fmt(ed['t0_s'])} s, beside those of the adiabatic decay along the steady
+family:</p>
+<table><tr><th>quantity</th><th>fitted</th><th>predicted</th></tr>
+{rows}</table>
+<img src="euler_disk.png" alt="Euler's disk: tilt, precession rate and contact-point speed">"""
+
+
+def _index_html(h: float, thr: dict, motions: dict, names: list) -> str:
+    e = html.escape
+    rows = [
+        ("rough", "straight line (SE position), eq. (42)", "&omega;<sub>20</sub>&sup2; &gt;",
+         thr["rough"]["straight_line_omega20_sq"]),
+        ("rough", "circle in the SE position, eq. (43)", "&omega;<sub>30</sub>&sup2; &gt;",
+         thr["rough"]["se_circle_omega30_sq"]),
+        ("smooth", "straight line, eq. (53)", "&omega;<sub>20</sub>&sup2; &gt;",
+         thr["smooth"]["straight_line_omega20_sq"]),
+        ("smooth", "spin in place, eq. (57)", "&omega;<sub>30</sub>&sup2; &gt;",
+         thr["smooth"]["spin_omega30_sq"]),
+    ]
+    thr_rows = "\n".join(
+        f"<tr><td>{g}</td><td>{what}</td><td>{cond} {_fmt(v)}</td>"
+        f"<td>{_fmt(math.sqrt(v))}</td></tr>" for g, what, cond, v in rows)
+
+    def motion_block(kind):
+        m = motions[kind]
+        verdict = (f"stable: &varpi;&sup2; = {_fmt(m['varpi2'])}, &varpi; = "
+                   f"{_fmt(m['varpi'])} (period {_fmt(m['period'])}); the simulation "
+                   f"oscillates at {_fmt(m['measured'])}" if m["stable"] else
+                   f"unstable: &varpi;&sup2; = {_fmt(m['varpi2'])}, growth rate "
+                   f"&radic;(&minus;&varpi;&sup2;) = {_fmt(m['growth_rate'])}; the simulation "
+                   f"grows at {_fmt(m['measured'])}")
+        return f"""
+<h3>{kind.capitalize()} steady circle</h3>
+<table><tr><th>&theta;<sub>0</sub> [rad]</th><th>&Omega;<sub>0</sub></th>
+<th>&omega;<sub>20</sub></th><th>&omega;<sub>30</sub></th><th>r<sub>C</sub></th>
+<th>r<sub>P</sub></th></tr>
+<tr><td>{_fmt(m['theta0'])}</td><td>{_fmt(m['Omega0'])}</td><td>{_fmt(m['omega20'])}</td>
+<td>{_fmt(m['omega30'])}</td><td>{_fmt(m['r_C'])}</td><td>{_fmt(m['r_P'])}</td></tr></table>
+<p>Closed form (section 4.1): {verdict}. Simulated from the steady state with a kick
+d&theta;/dt(0) = {_fmt(m['kick'], 2)} until t = {_fmt(m['t_end'])} (status
+<code>{e(m['status'])}</code>):
+largest |&theta; &minus; &theta;<sub>0</sub>| = {_fmt(m['max_theta_dev'], 3)}, largest energy
+error {_fmt(m['energy_error'], 2)} mga.</p>
+<div class="pair"><img src="motion_{kind}.png" alt="{kind} motion plots" width="620">
+<img src="motion_{kind}.gif" alt="{kind} motion animation" width="350"></div>"""
+
+    ex = motions["exact"]
+    return f"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8">
+<title>rollingdisk atlas, h = {h:.4g}</title><style>{_CSS}</style></head><body>
+<h1>Atlas of a disk of half-thickness h = {h:.4g}</h1>
+<p>A homogeneous disk of radius a and thickness 2h&nbsp;=&nbsp;{2 * h:.4g}&nbsp;a on a horizontal
+plane, after M. Batista, <i>Steady Motion of a Rigid Disk of Finite Thickness on a Horizontal
+Plane</i>. Units: m = a = g = 1 (time in &radic;(a/g)). &theta;<sub>0</sub> is the tilt from the
+vertical, &Omega;<sub>0</sub> the rate at which the disk turns about the vertical,
+&omega;<sub>30</sub> = &Omega;<sub>0</sub> cos&theta;<sub>0</sub> (eq. 3), r<sub>C</sub> the
+signed radius of the circle of the centre C (positive: the disk leans toward the centre A of
+the circle). The static equilibrium (SE) tilt is tan&theta;<sub>0</sub> = h,
+&theta;<sub>0</sub> = {math.atan(h):.4g} rad.
+All numbers come from the library (formulas derived and checked; see <code>docs/errata.md</code>
+for where they differ from the printed paper).</p>
+
+<h2>Stability thresholds</h2>
+<table><tr><th>ground</th><th>steady motion</th><th>stable if</th><th>threshold of |&omega;|</th>
+</tr>
+{thr_rows}</table>
+
+<h2>Where steady circles exist</h2>
+<p>Rough ground: in the (&theta;<sub>0</sub>, r<sub>C</sub>) plane a steady circle exists
+where &Omega;<sub>0</sub>&sup2; of eq. (31) is positive; dark: none, gray: it exists but is
+unstable (&varpi;&sup2; &lt; 0), white: stable. The red curve is r<sub>C</sub>* of eq. (32),
+where the denominator of eq. (31) vanishes. Smooth ground: there is no friction, so the centre
+C cannot move on a circle; every steady circle has r<sub>C</sub> = 0 (the contact point P
+turns about C at the radius r<sub>P</sub> = y<sub>P0</sub>), for every &theta;<sub>0</sub> and
+every &Omega;<sub>0</sub>.</p>
+<img src="existence.png" alt="existence maps">
+
+<h2>Stability of steady circles</h2>
+<p>For every &theta;<sub>0</sub> and every &omega;<sub>30</sub> &ne; 0 a steady circle exists
+on either ground (&omega;<sub>20</sub> from eq. (44) or (54)). Gray: &varpi;&sup2; &lt; 0
+(unstable), white: stable. The dotted line is the uniform bound above which every steady
+circle is stable whatever h and &theta;<sub>0</sub>: &omega;<sub>30</sub>&sup2; = 1 on rough
+ground, &omega;<sub>30</sub>&sup2; = 4 on smooth ground (the paper's conclusion prints 2, but
+its own eq. (57) at h = 0 needs 4; see <code>docs/figures.md</code>).</p>
+<img src="stability.png" alt="stability maps">
+<p>The same along a few vertical lines of these maps: &varpi;&sup2; against
+&omega;<sub>30</sub>. Where &varpi;&sup2; &gt; 0, &varpi; is the angular frequency of the small
+oscillation of the tilt; where &varpi;&sup2; &lt; 0, &radic;(&minus;&varpi;&sup2;) is the rate at
+which a disturbance grows.</p>
+<img src="varpi2.png" alt="varpi squared against omega30">
+
+<h2>Stable for every &omega;<sub>30</sub></h2>
+<p>White: at this (&theta;<sub>0</sub>, h) the steady circle is stable whatever
+&omega;<sub>30</sub> (conditions (46) and (59); the paper's Figures 5 and 7). The blue line
+marks this disk.</p>
+<img src="all_omega30.png" alt="regions stable for every omega30">
+
+<h2>Two steady circles, simulated</h2>
+<p>Each motion starts on the steady circle with a small kick d&theta;/dt, and is integrated
+with the full nonlinear equations (rough ground: eqs. (1), (2), (37), (38)). The plots show
+the paths of C and of the contact point P, &theta;(t), the energy error and the contact force
+(F<sub>z</sub> &gt; 0 keeps contact). The animation draws the disk as a cylinder of thickness
+2h; the red sectors are fixed in the body, so they show the rotation &phi;; the red line on the
+plane is the path of P.</p>
+{motion_block("stable")}
+{motion_block("unstable")}
+
+<h2>The stable circle at finite amplitude: the exact motion</h2>
+<p>On rough and smooth ground the disk is integrable: &omega;<sub>2</sub>,
+&omega;<sub>3</sub> and (d&theta;/dt)&sup2; are functions of &theta; alone, and time,
+&psi; and the contact point's path follow by quadrature (<code>rollingdisk exact</code>,
+<code>docs/exact.md</code>). Kicked by d&theta;/dt(0) = {_fmt(ex['kick'], 3)},
+the stable circle nutates between &theta; = {_fmt(ex['theta_min'], 6)} and
+{_fmt(ex['theta_max'], 6)} with period {_fmt(ex['period'], 8)}
+(linear theory: 2&pi;/&varpi; = {_fmt(ex['linear_period'], 8)}), the frame
+turning by &Delta;&psi; = {_fmt(ex['delta_psi'], 6)} per period. Left: &theta;(t)
+over one period; middle: the contact point over 20 periods; right: the backbone, frequency
+against amplitude, which starts at &varpi; and reaches
+{_fmt(ex['frequency_at_largest'], 5)} at amplitude
+{_fmt(ex['largest_amplitude'], 3)}.</p>
+<img src="exact.png" alt="exact motion: theta over a period, rosette, backbone">
+
+{_euler_block(motions["euler_disk"])}
+
+<h2>Files</h2>
+<p class="note">{" &middot; ".join(f'<a href="{e(n)}">{e(n)}</a>' for n in names)}</p>
+</body></html>
+"""

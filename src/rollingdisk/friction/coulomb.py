@@ -1,0 +1,304 @@
+"""Coulomb ground: the rolling and sliding equations of motion with contact moments.
+
+Derived in :mod:`rollingdisk.symbolic.coulomb` and checked against it by
+``tests/test_coulomb_eqs.py``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rollingdisk.friction.ground import Coulomb
+from rollingdisk.model.disk import Disk
+from rollingdisk.model.geometry import _geometry
+from rollingdisk.model.state import SMOOTH_STATE, _as_state
+from rollingdisk.util.errors import ParameterError
+
+__all__ = ["COULOMB_STATE", "MODE_NAMES", "coulomb_rhs", "coulomb_contact", "coulomb_energy",
+           "rolling_state"]
+
+
+
+# =======================================================================================
+# Coulomb ground: rolling and sliding modes with friction and contact moments (issue 10)
+# =======================================================================================
+# Derived in rollingdisk.symbolic.coulomb and checked against it by tests/test_coulomb_eqs.py.
+# State: the smooth one, y = [X_C, Y_C, V_X, V_Y, psi, theta, phi, omega1, omega2, omega3],
+# V_X, V_Y the inertial horizontal velocity of C (no longer constant).  Contact moments are
+# affine in the normal force, M = M0 + F_z M1 (components in Cxyz), see rollingdisk.friction.ground.
+#: Names of the Coulomb-ground state components (the smooth layout).
+COULOMB_STATE = SMOOTH_STATE
+
+
+#: Integer codes of the two modes of a Coulomb run (``Trajectory.mode``).
+ROLLING, SLIDING = 0, 1
+
+
+#: Mode code -> name.
+MODE_NAMES = ("rolling", "sliding")
+
+
+def _coulomb_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3):
+    """``M0, M1`` (6 floats, Cxyz) of the dissipative moments, ``M = M0 + F_z M1``.
+
+    Rolling resistance ``-c F_z omega_h/|omega_h|``, pivot ``-c F_z sgn(omega_z) e_z``, air
+    ``-c omega3 e_zeta / cos^3(theta)`` (see :mod:`rollingdisk.friction.ground`).  Scalars only."""
+    s = np.sin(theta)
+    c = np.cos(theta)
+    wx = w1
+    wy = w2 * c - w3 * s
+    wz = w2 * s + w3 * c
+    n = np.sqrt(wx * wx + wy * wy)
+    kr = 0.0
+    if n > 0.0:
+        kr = -c_roll / n
+    ka = -c_air * w3 / (c * c * c)  # air: -c omega3 zeta / cos^3(theta), zeta = (0, -s, c)
+    M1z = -c_pivot * np.sign(wz)
+    return 0.0, -ka * s, ka * c, kr * wx, kr * wy, M1z
+
+
+def _coulomb_powers(c_roll, c_pivot, c_air, theta, w1, w2, w3, F_z):
+    """Power ``omega . M`` of each moment: ``(rolling resistance, pivot, air)``, each <= 0."""
+    s = np.sin(theta)
+    c = np.cos(theta)
+    wx = w1
+    wy = w2 * c - w3 * s
+    wz = w2 * s + w3 * c
+    wh2 = wx * wx + wy * wy
+    return -c_roll * F_z * np.sqrt(wh2), -c_pivot * F_z * np.abs(wz), -c_air * w3 * w3 / (c * c * c)
+
+
+def _rolling_solve(h, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z):
+    """Rolling (no slip) with a contact moment ``M = M0 + F_z M1``: eqs. (8), (9), (11) with
+    the constraint (37).  Returns ``(dw1, dw2, dw3, F_x, F_y, F_z)`` (forces in Cxyz)."""
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    k1 = 0.25 + h * h / 3.0  # eq. (10)
+    k2 = 0.5
+    Om = w3 / c  # eq. (2)
+    v_Cx = w2 - ht * w3  # eq. (37)
+    v_Cy = w1 * z_P
+    G1 = (k2 * w2 - k1 * w3 * p) * w3
+    G3 = (-k2 * w2 + k1 * w3 * p) * w1
+    # (9)_1 with F_y from (8)_2 and F_z from (11): the omega1^2 terms cancel
+    d1 = ((G1 - z_P * v_Cx * Om + y_P + M0x + M1x * (1.0 + z_P * w1 * w1))
+          / (k1 + z_P * z_P + y_P * y_P + y_P * M1x))
+    F_z = 1.0 + z_P * w1 * w1 - y_P * d1  # eq. (11)
+    My = M0y + F_z * M1y
+    Mz = M0z + F_z * M1z
+    Meta = c * My + s * Mz
+    Mzeta = -s * My + c * Mz
+    # (9)_2, (9)_3 with F_x = d v_Cx/dt - v_Cy Omega, d v_Cx/dt = dw2 - h~ dw3
+    a11 = k2 + 1.0
+    a22 = k1 + ht * ht
+    b1 = v_Cy * Om + Meta
+    b2 = G3 - ht * v_Cy * Om + Mzeta
+    det = a11 * a22 - ht * ht
+    d2 = (b1 * a22 + ht * b2) / det
+    d3 = (a11 * b2 + ht * b1) / det
+    F_x = d2 - ht * d3 - v_Cy * Om  # eq. (8)_1
+    F_y = z_P * d1 + y_P * w1 * w1 + v_Cx * Om  # eq. (8)_2
+    return d1, d2, d3, F_x, F_y, F_z
+
+
+def _sliding_solve(h, mu, e_x, e_y, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z):
+    """Sliding with friction ``F_t = -mu F_z e`` (``e`` a unit vector in Cxyz) and a contact
+    moment ``M = M0 + F_z M1``: (9) with ``F_z`` from (11), solved jointly with
+    ``d omega1/dt``.  Returns ``(dw1, dw2, dw3, F_x, F_y, F_z)`` (forces in Cxyz)."""
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    k1 = 0.25 + h * h / 3.0  # eq. (10)
+    k2 = 0.5
+    G1 = (k2 * w2 - k1 * w3 * p) * w3
+    G3 = (-k2 * w2 + k1 * w3 * p) * w1
+    q = mu * z_P * e_y + y_P + M1x  # (9)_1 = G1 + q F_z + M0x
+    d1 = (G1 + M0x + q * (1.0 + z_P * w1 * w1)) / (k1 + y_P * q)
+    F_z = 1.0 + z_P * w1 * w1 - y_P * d1  # eq. (11)
+    F_x = -mu * F_z * e_x
+    F_y = -mu * F_z * e_y
+    My = M0y + F_z * M1y
+    Mz = M0z + F_z * M1z
+    d2 = (-F_x + c * My + s * Mz) / k2  # eq. (9)_2
+    d3 = (G3 + ht * F_x - s * My + c * Mz) / k1  # eq. (9)_3
+    return d1, d2, d3, F_x, F_y, F_z
+
+
+def _slip_velocity(h, y):
+    """Slip velocity of the contact point ``(u_x, u_y)`` in Cxyz (eq. 6), Coulomb state."""
+    V_X, V_Y, psi, theta, w1, w2, w3 = y[2], y[3], y[4], y[5], y[7], y[8], y[9]
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    cp = np.cos(psi)
+    sp = np.sin(psi)
+    v_Cx = V_X * cp + V_Y * sp
+    v_Cy = -V_X * sp + V_Y * cp
+    return v_Cx - w2 + ht * w3, v_Cy - w1 * z_P  # eq. (6)
+
+
+def _coulomb_rolling(h, c_roll, c_pivot, c_air, y):
+    """Rolling mode at a Coulomb state: ``(dy[0:10], F_x, F_y, F_z, P_roll, P_pivot,
+    P_air)``; ``X_C, Y_C`` move with the no-slip velocity (37), ``V_X, V_Y`` with the force."""
+    psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    M0x, M0y, M0z, M1x, M1y, M1z = _coulomb_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3)
+    d1, d2, d3, F_x, F_y, F_z = _rolling_solve(h, theta, w1, w2, w3,
+                                               M0x, M0y, M0z, M1x, M1y, M1z)
+    cp = np.cos(psi)
+    sp = np.sin(psi)
+    v_Cx = w2 - ht * w3  # eq. (37)
+    v_Cy = w1 * z_P
+    P1, P2, P3 = _coulomb_powers(c_roll, c_pivot, c_air, theta, w1, w2, w3, F_z)
+    dy = (v_Cx * cp - v_Cy * sp, v_Cx * sp + v_Cy * cp,  # eq. (1)
+          F_x * cp - F_y * sp, F_x * sp + F_y * cp,  # eq. (8), inertial components
+          w3 / c, w1, w2 - w3 * p, d1, d2, d3)  # eq. (2)
+    return dy, F_x, F_y, F_z, P1, P2, P3
+
+
+def _coulomb_sliding(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_eps=0.0):
+    """Sliding mode at a Coulomb state: ``(dy[0:10], F_x, F_y, F_z, P_slip, P_roll,
+    P_pivot, P_air)``.
+
+    The friction direction is ``e = sigma u/|u|`` with ``sigma = sgn(u . ref)`` for the
+    inertial reference direction ``ref`` (the slip direction when the step began): equal
+    to ``u/|u|`` while the slip keeps its direction, and the smooth continuation of the
+    sliding solution through ``u = 0``, where the hybrid driver stops it (an event).  Where
+    ``|u| <= u_eps`` (the slip just started from rest, its direction not yet resolved
+    above rounding), ``e = ref``."""
+    psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    cp = np.cos(psi)
+    sp = np.sin(psi)
+    u_x, u_y = _slip_velocity(h, y)
+    n = np.sqrt(u_x * u_x + u_y * u_y)
+    r_x = ref_X * cp + ref_Y * sp  # ref in Cxyz
+    r_y = -ref_X * sp + ref_Y * cp
+    if n > u_eps and n > 0.0:
+        sig = 1.0
+        if u_x * r_x + u_y * r_y < 0.0:
+            sig = -1.0
+        e_x = sig * u_x / n
+        e_y = sig * u_y / n
+    else:
+        e_x = r_x
+        e_y = r_y
+    M0x, M0y, M0z, M1x, M1y, M1z = _coulomb_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3)
+    d1, d2, d3, F_x, F_y, F_z = _sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3,
+                                               M0x, M0y, M0z, M1x, M1y, M1z)
+    P1, P2, P3 = _coulomb_powers(c_roll, c_pivot, c_air, theta, w1, w2, w3, F_z)
+    dy = (y[2], y[3],  # eq. (1)
+          F_x * cp - F_y * sp, F_x * sp + F_y * cp,  # eq. (8), inertial components
+          w3 / c, w1, w2 - w3 * p, d1, d2, d3)  # eq. (2)
+    return dy, F_x, F_y, F_z, F_x * u_x + F_y * u_y, P1, P2, P3
+
+
+def _coulomb_energy(h, y):
+    """Energy (eq. 13) at a Coulomb state: ``V_X, V_Y`` from the state, ``v_Cz`` from (7)."""
+    V_X, V_Y, theta, w1, w2, w3 = y[2], y[3], y[5], y[7], y[8], y[9]
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    k1 = 0.25 + h * h / 3.0
+    v_Cz = -w1 * y_P
+    return (0.5 * (V_X * V_X + V_Y * V_Y + v_Cz * v_Cz) + 0.5 * k1 * (w1 * w1 + w3 * w3)
+            + 0.25 * w2 * w2 - z_P)
+
+
+def _rolling_velocity(h, y):
+    """Inertial ``(V_X, V_Y)`` of C that rolling (no slip, eq. 37) implies at state ``y``."""
+    psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    v_Cx = w2 - ht * w3
+    v_Cy = w1 * z_P
+    cp = np.cos(psi)
+    sp = np.sin(psi)
+    return v_Cx * cp - v_Cy * sp, v_Cx * sp + v_Cy * cp
+
+
+# ------------------------------------------------------------------- public wrappers
+def _check_coulomb(ground):
+    if not isinstance(ground, Coulomb):
+        raise ParameterError(f"ground must be a rollingdisk.Coulomb(...) value here, got "
+                             f"{ground!r}")
+    return ground
+
+
+def _check_mode(mode) -> int:
+    if mode in ("rolling", ROLLING) and not isinstance(mode, bool):
+        return ROLLING
+    if mode in ("sliding", SLIDING) and not isinstance(mode, bool):
+        return SLIDING
+    raise ParameterError(f"mode must be 'rolling' or 'sliding', got {mode!r}")
+
+
+def coulomb_rhs(disk: Disk, ground, mode, y, slip_reference=None) -> np.ndarray:
+    """``dy/dt`` on Coulomb ground in one mode, state layout :data:`COULOMB_STATE`.
+
+    Parameters
+    ----------
+    disk : Disk
+    ground : Coulomb
+    mode : {"rolling", "sliding"}
+        Rolling: no slip, the contact force follows from the constraint (eqs. 8, 9, 11, 37)
+        with the contact moments of ``ground``; ``X_C, Y_C`` move with the no-slip velocity.
+        Sliding: ``F_t = -mu_k F_z u/|u|`` (``u`` from eq. 6), ``F_z`` from eq. (11).
+    y : array_like, shape (10,)
+    slip_reference : (float, float), optional
+        Sliding only: the inertial direction used when ``u = 0`` (default: ``(1, 0)``).
+
+    Returns
+    -------
+    ndarray, shape (10,)
+    """
+    g = _check_coulomb(ground)
+    y = _as_state("smooth", y)
+    cr, cpv, ca = g.coefficients
+    if _check_mode(mode) == ROLLING:
+        return np.array(_coulomb_rolling(disk.h, cr, cpv, ca, y)[0])
+    rx, ry = (1.0, 0.0) if slip_reference is None else slip_reference
+    u = _slip_velocity(disk.h, y)
+    if slip_reference is None and (u[0] or u[1]):
+        rx, ry = _to_inertial(y[4], *u)
+    return np.array(_coulomb_sliding(disk.h, g.mu_k, cr, cpv, ca, y, rx, ry)[0])
+
+
+def _to_inertial(psi, ax, ay):
+    cp, sp = np.cos(psi), np.sin(psi)
+    return ax * cp - ay * sp, ax * sp + ay * cp
+
+
+def coulomb_contact(disk: Disk, ground, mode, y) -> dict:
+    """Contact quantities on Coulomb ground in one mode at state ``y`` (shape (10,)).
+
+    Returns
+    -------
+    dict
+        ``F_x, F_y, F_z`` (contact force in Cxyz, units ``m g``), ``F_t = |(F_x, F_y)|``,
+        ``u_x, u_y`` (slip velocity, eq. 6), ``power_slip`` (``v_P . F_t``), and the
+        powers ``power_rolling_resistance``, ``power_pivot``, ``power_air`` (``omega . M``
+        of each moment; all powers ``<= 0``, eq. 14).
+    """
+    g = _check_coulomb(ground)
+    y = _as_state("smooth", y)
+    cr, cpv, ca = g.coefficients
+    u_x, u_y = _slip_velocity(disk.h, y)
+    if _check_mode(mode) == ROLLING:
+        _, F_x, F_y, F_z, P1, P2, P3 = _coulomb_rolling(disk.h, cr, cpv, ca, y)
+        P0 = 0.0
+    else:
+        rx, ry = _to_inertial(y[4], u_x, u_y) if (u_x or u_y) else (1.0, 0.0)
+        _, F_x, F_y, F_z, P0, P1, P2, P3 = _coulomb_sliding(disk.h, g.mu_k, cr, cpv, ca, y,
+                                                            rx, ry)
+    return {"F_x": F_x, "F_y": F_y, "F_z": F_z, "F_t": float(np.hypot(F_x, F_y)),
+            "u_x": u_x, "u_y": u_y, "power_slip": P0, "power_rolling_resistance": P1,
+            "power_pivot": P2, "power_air": P3}
+
+
+def coulomb_energy(disk: Disk, y):
+    """Total mechanical energy (eq. 13) at a Coulomb state (layout :data:`COULOMB_STATE`)."""
+    y = _as_state("smooth", y)
+    return _coulomb_energy(disk.h, y)
+
+
+def rolling_state(disk: Disk, y_rough) -> np.ndarray:
+    """The Coulomb (smooth-layout) state of a rough-ground state: ``V_X, V_Y`` from the
+    no-slip condition (eq. 37) rotated into OXYZ (eq. 1)."""
+    y_rough = _as_state("rough", y_rough)
+    X_C, Y_C, psi, theta, phi, w1, w2, w3 = y_rough
+    y = np.array([X_C, Y_C, 0.0, 0.0, psi, theta, phi, w1, w2, w3])
+    y[2], y[3] = _rolling_velocity(disk.h, y)
+    return y

@@ -1,0 +1,401 @@
+"""The two integration drivers behind :func:`rollingdisk.simulate` (private).
+
+:func:`run_compiled` runs the DOP853 of :mod:`rollingdisk.integrate.dop853` in chunks of about
+``_CHUNK_SECONDS`` of wall time (the integrator pauses without changing its steps), so that
+``progress`` is called, the step budget is kept and ``KeyboardInterrupt`` or ``Terminated``
+(SIGTERM) surfaces between chunks.  Each chunk runs compiled (:mod:`rollingdisk.integrate.numba_core`)
+or uncompiled (:mod:`rollingdisk.integrate.pycore`), as :mod:`rollingdisk.integrate.jit` decides: a run starts
+uncompiled unless the compiled code is already loaded, and switches between chunks.
+:func:`run_scipy` steps scipy's own
+``DOP853`` one step at a time and does the same in Python.  Both sample the guards of
+:mod:`rollingdisk.integrate.events` on the dense output inside every step (at ``j / 8`` of it) and
+locate the first root on the interpolant; the earliest event of a step wins, an edge
+contact before a lift-off at the same instant.
+"""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from rollingdisk.integrate import events as _ev
+from rollingdisk.model.equations import equations_of_motion
+from rollingdisk.model.state import state_index
+
+_CHUNK_SECONDS = 0.05
+_NSUB = 8  # as _dop853._NSUB
+
+
+def _marks(t0, t1, progress):
+    """Progress marks: the hundredths of t_span (only t1 without progress)."""
+    if progress is None:
+        return [t1]
+    return [t0 + (t1 - t0) * i / 100 for i in range(1, 100)] + [t1]
+
+
+def _advance(marks, i, t):
+    """(next mark index, whether a mark was passed) after reaching time t."""
+    j = i
+    while j < len(marks) - 1 and marks[j] <= t:
+        j += 1
+    return j, j > i
+
+
+def _call(fn, *args):
+    """Call compiled code with SIGINT and SIGTERM held back until it returns (a chunk lasts
+    about ``_CHUNK_SECONDS``): a signal then surfaces in Python as ``KeyboardInterrupt`` or
+    ``Terminated``, never inside numba's dispatcher (which would turn it into a
+    ``SystemError``)."""
+    import signal
+    import threading
+
+    mask = getattr(signal, "pthread_sigmask", None)
+    if mask is None or threading.current_thread() is not threading.main_thread():
+        return fn(*args)
+    held = {signal.SIGINT, signal.SIGTERM}
+    old = mask(signal.SIG_BLOCK, held)
+    try:
+        return fn(*args)
+    finally:
+        mask(signal.SIG_SETMASK, old)
+
+
+def _dense_solution(segments, t_end):
+    from scipy.integrate import OdeSolution
+    from scipy.integrate._ivp.rk import Dop853DenseOutput
+
+    pieces = [Dop853DenseOutput(t, t + dt, y, F) for t, dt, y, F in segments]
+    if not pieces:
+        return None
+    ts = np.array([s[0] for s in segments] + [t_end])
+    return OdeSolution(ts, pieces)
+
+
+def _pick_core(state, elapsed, fraction):
+    """The integrator to run the next chunk with: the compiled one if it is loaded, or once
+    the run has spent ``_jit.PY_BUDGET`` seconds uncompiled and the cache is ready (loading
+    it then); else the uncompiled one, after starting a background compile of a cold
+    cache.  A run far from done on a machine with no idle core waits for that compiler
+    rather than slow it down (``_jit.worth_waiting``)."""
+    from rollingdisk.integrate import jit as _jit
+    from rollingdisk.integrate import simulation as _simulate
+
+    if _simulate._core is not None:
+        return _simulate._core, True
+    if elapsed >= _jit.PY_BUDGET:
+        if not _jit.ready() and not state.get("spawned"):
+            state["spawned"] = True
+            _jit.start_background_compile()
+        elif (not _jit.ready() and not state.get("waited")
+              and _jit.worth_waiting(elapsed, fraction)):
+            state["waited"] = True
+            _jit.wait_ready()
+        if _jit.ready():
+            _simulate.jit_compile()  # loads from the on-disk cache
+            return _simulate._core, True
+    from rollingdisk.integrate import pycore as _pycore
+
+    return _pycore, False
+
+
+def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_eval,
+                 dense_output, events, guards, max_steps, progress, out, finish):
+    rough = ground == "rough"
+    use = np.zeros(3, dtype=np.bool_)
+    for g in guards:
+        use[g.index] = True
+    theta0 = y[state_index(ground, "theta")]
+    side = 1.0 if theta0 >= 0 else -1.0
+    atolv = np.broadcast_to(np.asarray(atol, dtype=float), y.shape).copy()
+    has_t_eval = t_eval is not None
+    te = t_eval if has_t_eval else np.zeros(1)
+    marks = _marks(t0, t1, progress)
+    i_mark = 0
+    start = time.perf_counter()
+    n_steps = n_rhs = 0
+    h_next = 0.0 if first_step is None else first_step
+    tc, yc = t0, y
+    chunk = {True: 2000, False: 50}
+    state = {}
+    later = False
+    segments = []
+    while True:
+        core, compiled = _pick_core(state, time.perf_counter() - start, (tc - t0) / (t1 - t0))
+        te_c = te[np.searchsorted(te, tc, side="right"):] if later and has_t_eval else te
+        w = time.perf_counter()
+        args = (rough, disk.h, tc, yc, t1, marks[i_mark], rtol, atolv, max_step, h_next, use,
+                side, te_c, has_t_eval, max_steps - n_steps, chunk[compiled], dense_output)
+        (ts_c, ys_c, ns, nr, code, event, h_next, tc, yc, st, sdt, sy, sF) = (
+            _call(core.integrate, *args) if compiled else core.integrate(*args))
+        w = time.perf_counter() - w
+        if ns > 0:  # aim at _CHUNK_SECONDS per chunk
+            chunk[compiled] = int(min(max(chunk[compiled] * _CHUNK_SECONDS / max(w, 1e-6),
+                                          10), 1_000_000))
+        n_steps += ns
+        n_rhs += nr
+        # without t_eval a later chunk starts with the previous one's last point
+        skip = 1 if later and not has_t_eval else 0
+        out.add(ts_c[skip:], ys_c[skip:])
+        later = True
+        if dense_output:
+            segments.extend(zip(st, sdt, sy, sF))
+        t_now = float(ts_c[-1]) if event >= 0 and len(ts_c) else tc
+        i_mark, crossed = _advance(marks, i_mark, tc)
+        if progress is not None and (code != _ev.RUNNING or crossed):
+            progress(float((t_now - t0) / (t1 - t0)))
+        if code != _ev.RUNNING:
+            break
+    wall = time.perf_counter() - start
+    sol = _dense_solution(segments, t_now) if dense_output else None
+    return finish(disk, ground, "dop853", out, code, t_now, n_steps, n_rhs, wall,
+                  max_steps, t1, sol=sol)
+
+
+def run_taylor(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_eval,
+               dense_output, events, guards, max_steps, progress, out, finish):
+    """``simulate(method="taylor")``: the compiled Taylor integrator of
+    :mod:`rollingdisk.integrate.taylor` (compiled or loaded first, as :func:`jit_compile`), run in
+    chunks of about ``_CHUNK_SECONDS`` so that progress and signals come through."""
+    from rollingdisk.integrate import simulation as _simulate
+    from rollingdisk.integrate import taylor as _taylor
+
+    _simulate.jit_compile()
+    core = _simulate._core
+    rough = ground == "rough"
+    use = np.zeros(3, dtype=np.bool_)
+    for g in guards:
+        use[g.index] = True
+    side = 1.0 if y[state_index(ground, "theta")] >= 0 else -1.0
+    atolv = np.broadcast_to(np.asarray(atol, dtype=float), y.shape).copy()
+    finite = atolv[np.isfinite(atolv)]
+    order = _taylor.taylor_order(min(rtol, float(finite.min()) if finite.size else rtol))
+    has_t_eval = t_eval is not None
+    te = t_eval if has_t_eval else np.zeros(1)
+    start = time.perf_counter()
+    n_steps = 0
+    tc, yc = t0, y
+    chunk = 2000
+    later = False
+    while True:
+        te_c = te[np.searchsorted(te, tc, side="right"):] if later and has_t_eval else te
+        w = time.perf_counter()
+        ts_c, ys_c, ns, code, event, tc, yc = _call(
+            core._tay_integrate, rough, disk.h, tc, yc, t1, rtol, atolv, max_step, use, side,
+            te_c, has_t_eval, max_steps - n_steps, chunk, order)
+        w = time.perf_counter() - w
+        if ns > 0:
+            chunk = int(min(max(chunk * _CHUNK_SECONDS / max(w, 1e-6), 10), 1_000_000))
+        n_steps += ns
+        out.add(ts_c[1 if later and not has_t_eval else 0:], ys_c[1 if later and not
+                                                                   has_t_eval else 0:])
+        later = True
+        t_now = float(ts_c[-1]) if event >= 0 and len(ts_c) else tc
+        if progress is not None:
+            progress(float((t_now - t0) / (t1 - t0)))
+        if code != _ev.RUNNING:
+            break
+    wall = time.perf_counter() - start
+    return finish(disk, ground, "taylor", out, code, t_now, n_steps, n_steps, wall,
+                  max_steps, t1, sol=None)
+
+
+class _LazyDense:
+    """The dense output of the solver's last step, formed on first use."""
+
+    def __init__(self, solver):
+        self.solver = solver
+        self.dense = None
+
+    def get(self):
+        if self.dense is None:
+            self.dense = self.solver.dense_output()
+        return self.dense
+
+    def __call__(self, t):
+        return self.get()(t)
+
+
+def _needs_sampling(guards, solver, g_old, g_new):
+    """The rule of the compiled integrator (``_dop853._needs_sampling``) on a scipy step:
+    the guards at its start, at the stage state ``_MID_STAGE`` and at its end."""
+    from rollingdisk.integrate import dop853 as d
+
+    k = d._MID_STAGE
+    y_mid = solver.y_old + solver.h_previous * (d._A[k, :k] @ solver.K[:k])
+    use = np.zeros(3, dtype=bool)
+    a, m, b = np.ones(3), np.ones(3), np.ones(3)
+    for g, va, vb in zip(guards, g_old, g_new):
+        use[g.index], a[g.index], m[g.index], b[g.index] = True, va, g(0.0, y_mid), vb
+    return d._needs_sampling(a, m, b, use)
+
+
+class _Counter:
+    def __init__(self, f):
+        self.f = f
+        self.n = 0
+
+    def __call__(self, t, y):
+        self.n += 1
+        return self.f(t, y)
+
+
+def _root(fun, a, b, fa):
+    """The admissible end of a bracket [a, b] of a root of fun (fun(a) = fa > 0 >= fun(b)),
+    shrunk to round-off by the Illinois variant of regula falsi."""
+    fb = fun(b)
+    flag = 0
+    for _ in range(200):
+        if b - a <= 4 * np.finfo(float).eps * max(abs(a), abs(b), 1.0):
+            break
+        c = (a * fb - b * fa) / (fb - fa)
+        if not a < c < b:
+            c = 0.5 * (a + b)
+        fc = fun(c)
+        if fc > 0:
+            a, fa = c, fc
+            if flag == -1:
+                fb *= 0.5
+            flag = -1
+        else:
+            b, fb = c, fc
+            if flag == 1:
+                fa *= 0.5
+            flag = 1
+    return a
+
+
+def _locate_guards(guards, sol, t_old, t_new, g_old, g_new):
+    """(t, guard) of the first guard root in the step, sampled at j/_NSUB of it, or None."""
+    order = sorted(guards, key=lambda g: (g.index != 1, g.index))  # edge contact first
+    prev_t, prev = t_old, g_old
+    for j in range(1, _NSUB + 1):
+        t = t_new if j == _NSUB else t_old + (t_new - t_old) * j / _NSUB
+        vals = g_new if j == _NSUB else [g(t, sol(t)) for g in guards]
+        fired = [g for g in order if vals[guards.index(g)] <= 0.0]
+        if fired:
+            best = None
+            for g in fired:
+                fa = prev[guards.index(g)]
+                tk = prev_t if not fa > 0 else _root(lambda s, g=g: g(s, sol(s)), prev_t, t,
+                                                    fa)
+                if best is None or tk < best[0]:
+                    best = (tk, g)
+            return best
+        prev_t, prev = t, vals
+    return None
+
+
+def run_scipy(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_eval,
+              dense_output, events, guards, max_steps, progress, out, finish):
+    from scipy.integrate import DOP853
+    from scipy.optimize import brentq
+
+    fun = _Counter(equations_of_motion(disk, ground))
+    user = list(events or [])
+    g_old = [g(t0, y) for g in guards]
+    code = _ev.RUNNING
+    te = t_eval
+    ie = 0
+    if te is None:
+        out.add([t0], [y])
+    else:
+        while ie < te.size and te[ie] <= t0:
+            out.add([t0], [y])
+            ie += 1
+    for g, v in zip(guards, g_old):
+        if g.code != _ev.EDGE_CONTACT and v <= 0.0:
+            if te is None or ie == 0:
+                if te is not None:
+                    out.add([t0], [y])
+            return finish(disk, ground, "scipy", out, g.code, t0, 0, 0, 0.0, max_steps, t1)
+    start = time.perf_counter()
+    options = {} if first_step is None else {"first_step": first_step}
+    solver = DOP853(fun, t0, y, t1, max_step=max_step, rtol=rtol, atol=atol, **options)
+    u_old = [e(t0, y) for e in user]
+    t_events = [[] for _ in user]
+    y_events = [[] for _ in user]
+    counts = [0] * len(user)
+    marks = _marks(t0, t1, progress)
+    i_mark = 0
+    n_steps = 0
+    segments = []
+    message = None
+    t_now = t0
+    while code == _ev.RUNNING:
+        if solver.status == "finished":
+            code = _ev.COMPLETED
+            break
+        if n_steps >= max_steps:
+            code = _ev.STEP_BUDGET
+            break
+        msg = solver.step()
+        if solver.status == "failed":
+            code, message = _ev.FAILED, f"failed: {msg}"
+            break
+        n_steps += 1
+        t_old, t_new = solver.t_old, solver.t
+        sol = _LazyDense(solver)  # 3 right-hand sides, only if the step needs them
+        g_new = [g(t_new, solver.y) for g in guards]
+        t_stop, y_stop = t_new, solver.y
+        hit = _locate_guards(guards, sol, t_old, t_new, g_old, g_new) \
+            if guards and _needs_sampling(guards, solver, g_old, g_new) else None
+        if hit is not None:
+            t_stop, y_stop, code = hit[0], sol(hit[0]), hit[1].code
+            if hit[1].code == _ev.EDGE_CONTACT:
+                # report the admissible side of theta = 0, where h~ = h sgn(theta) flips
+                i = state_index(ground, "theta")
+                if y_stop[i] * hit[1].side <= 0:
+                    y_stop = np.array(y_stop)
+                    y_stop[i] = np.nextafter(0.0, hit[1].side)
+        # user events, as solve_ivp: sign changes between step ends, in the direction asked
+        u_new = [e(t_new, solver.y) for e in user]
+        stop_user = None
+        for k, e in enumerate(user):
+            a, b = u_old[k], u_new[k]
+            d = getattr(e, "direction", 0)
+            if (a < 0 <= b or a > 0 >= b) and not (d > 0 and a > b) and not (d < 0 and a < b):
+                tr = brentq(lambda s, e=e, sol=sol: e(s, sol(s)), t_old, t_new, xtol=4 * np.finfo(
+                    float).eps) if b != 0 else t_new
+                if tr > t_stop:
+                    continue
+                t_events[k].append(tr)
+                y_events[k].append(sol(tr))
+                counts[k] += 1
+                term = int(getattr(e, "terminal", False) or 0)
+                if term and counts[k] >= term and (stop_user is None or tr < stop_user[0]):
+                    stop_user = (tr, k)
+        if stop_user is not None and (hit is None or stop_user[0] < t_stop):
+            t_stop, y_stop, code = stop_user[0], sol(stop_user[0]), _ev.COMPLETED
+            message = f"completed: stopped by user event {stop_user[1]} at t = {t_stop:.12g}"
+        if dense_output:
+            segments.append((t_old, sol.get()))
+        if te is None:
+            out.add([t_stop], [y_stop])
+        else:
+            j = ie
+            while j < te.size and te[j] <= t_stop:
+                j += 1
+            if j > ie:
+                out.add(te[ie:j], np.array([y_stop if s == t_stop else sol(s)
+                                            for s in te[ie:j]]))
+            ie = j
+            if code != _ev.RUNNING and (j == 0 or te[j - 1] != t_stop):
+                out.add([t_stop], [y_stop])
+        t_now = t_stop
+        g_old, u_old = g_new, u_new
+        i_mark, crossed = _advance(marks, i_mark, t_now)
+        if progress is not None and (code != _ev.RUNNING or crossed
+                                     or solver.status == "finished"):
+            progress(float((t_now - t0) / (t1 - t0)))
+    wall = time.perf_counter() - start
+    sol = None
+    if dense_output and segments:
+        from scipy.integrate import OdeSolution
+
+        sol = OdeSolution(np.array([s[0] for s in segments] + [t_now]),
+                          [s[1] for s in segments])
+    t_ev = tuple(np.array(v) for v in t_events)
+    y_ev = tuple(np.array(v).reshape(len(v), -1) for v in y_events)
+    return finish(disk, ground, "scipy", out, code, t_now, n_steps, fun.n, wall, max_steps,
+                  t1, message=message, sol=sol, t_events=t_ev, y_events=y_ev)

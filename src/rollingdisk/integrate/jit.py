@@ -1,0 +1,201 @@
+"""When the compiled integrator is worth loading, and filling a cold compile cache.
+
+Loading the numba integrator costs about 0.5 s (``import numba`` and the cached machine
+code), compiling it with an empty cache 10-20 s; the same integrator run uncompiled
+(:mod:`rollingdisk.integrate.pycore`) takes about 30 times as long per step as compiled.  So
+:func:`rollingdisk.simulate` starts every run uncompiled and
+
+* if the compiled code is already loaded in this process, uses it from the start;
+* if the run is not done after :data:`PY_BUDGET` seconds and the on-disk cache is ready,
+  loads the compiled code (0.5 s) and continues with it (the very same steps: the run
+  pauses and resumes);
+* if the cache is cold, starts :func:`start_background_compile`: a detached process that
+  compiles and fills the on-disk cache, then marks it ready; the run goes on
+  uncompiled and switches once the mark appears.  A short or medium run never waits for a
+  compiler; a run that would need more than :data:`COMPILE_GUESS` seconds more
+  uncompiled on a machine with no idle core waits for the compiler instead of competing
+  with it for the CPU (:func:`worth_waiting`): then it costs what compiling first did.
+
+The mark is a file named after the sources (path, size and modification time of
+``_dop853.py``, ``equations.py``, ``_numba_core.py`` and numba's own ``__init__.py``) and
+the Python version, in the folder of numba's cache (``NUMBA_CACHE_DIR`` or the package's
+``__pycache__``, else a user cache folder).  Two processes may start a compiler at once:
+the compiler takes an exclusive lock (``fcntl.flock``) and a second one leaves at once;
+numba itself writes its cache files atomically.
+
+Run as ``python -m rollingdisk.integrate.jit`` it is that background compiler.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib.util
+import os
+import sys
+from pathlib import Path
+
+#: Seconds of uncompiled integration after which a run switches to the compiled code
+#: (about what loading it costs, so a run never pays more than twice the best choice).
+PY_BUDGET = 0.4
+
+#: About how long a compile takes (seconds): a run projected to need more than this
+#: uncompiled waits for the background compiler when no core is idle (see worth_waiting).
+COMPILE_GUESS = 20.0
+#: The longest a run waits for the background compiler before going on uncompiled.
+MAX_WAIT = 300.0
+
+_PKG = Path(__file__).resolve().parent
+_started = False
+_proc = None
+
+
+def _folder() -> Path:
+    env = os.environ.get("NUMBA_CACHE_DIR")
+    if env:
+        return Path(env)
+    here = _PKG / "__pycache__"
+    try:
+        here.mkdir(exist_ok=True)
+        if os.access(here, os.W_OK):
+            return here
+    except OSError:
+        pass
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "rollingdisk"
+
+
+def _key() -> str:
+    parts = [sys.version]
+    spec = importlib.util.find_spec("numba")
+    files = [_PKG / "_dop853.py", _PKG / "equations.py", _PKG / "_numba_core.py"]
+    if spec is not None and spec.origin:
+        files.append(Path(spec.origin))
+    for f in files:
+        try:
+            st = f.stat()
+            parts.append(f"{f}:{st.st_size}:{st.st_mtime_ns}")
+        except OSError:
+            parts.append(f"{f}:missing")
+    return hashlib.sha1("|".join(parts).encode()).hexdigest()[:16]
+
+
+def marker() -> Path:
+    """The file whose presence says the on-disk compile cache is ready for these sources."""
+    return _folder() / f"rollingdisk-jit-{_key()}.ready"
+
+
+def ready() -> bool:
+    """Whether the compiled integrator loads from the on-disk cache (no compiling)."""
+    try:
+        return marker().exists()
+    except OSError:
+        return False
+
+
+def mark_ready() -> None:
+    """Record that the cache is ready (called after a successful compile or load)."""
+    m = marker()
+    try:
+        m.parent.mkdir(parents=True, exist_ok=True)
+        tmp = m.with_name(f"{m.name}.{os.getpid()}.tmp")
+        tmp.write_text("numba cache of rollingdisk's integrator is filled\n")
+        os.replace(tmp, m)
+    except OSError:
+        pass
+
+
+def start_background_compile() -> bool:
+    """Start, once per process, a detached process that fills the compile cache; True if
+    one was started.  Never waits for it."""
+    global _started, _proc
+    if _started or ready() or importlib.util.find_spec("numba") is None:
+        return False
+    _started = True
+    import subprocess
+
+    env = dict(os.environ)
+    src = str(_PKG.parent)
+    env["PYTHONPATH"] = src + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
+    try:
+        _proc = subprocess.Popen([sys.executable, "-m", "rollingdisk.integrate.jit"], env=env,
+                         stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                         stderr=subprocess.DEVNULL, start_new_session=True, close_fds=True)
+    except OSError:
+        return False
+    return True
+
+
+def worth_waiting(elapsed: float, fraction: float) -> bool:
+    """Whether a run that has spent ``elapsed`` seconds uncompiled on ``fraction`` of its
+    span should wait for the background compiler: it would need more than
+    :data:`COMPILE_GUESS` seconds more uncompiled, and no core is idle (load average of one
+    minute at least the number of cores less one half), so that running on would only slow
+    the compiler down.  With idle cores it runs on while the compiler works beside it."""
+    if not 0.0 < fraction < 1.0:
+        return False
+    remaining = elapsed * (1.0 - fraction) / fraction
+    try:
+        busy = os.getloadavg()[0] >= (os.cpu_count() or 1) - 0.5
+    except (AttributeError, OSError):  # pragma: no cover - no load average (Windows)
+        busy = True
+    return remaining > COMPILE_GUESS and busy
+
+
+def _compiling_now() -> bool:
+    """Whether some process holds the compiler's lock."""
+    try:
+        import fcntl
+    except ImportError:  # pragma: no cover
+        return _proc is not None and _proc.poll() is None
+    try:
+        with open(_folder() / "rollingdisk-jit.lock", "a") as lock:
+            try:
+                fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except OSError:
+                return True
+            fcntl.flock(lock, fcntl.LOCK_UN)
+            return False
+    except OSError:
+        return False
+
+
+def wait_ready(timeout: float = MAX_WAIT) -> bool:
+    """Wait (polling, interruptible) until the cache is ready; False if no compiler is at
+    work any more without having made it ready, or after ``timeout`` seconds."""
+    import time
+
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        if ready():
+            return True
+        ours_alive = _proc is not None and _proc.poll() is None
+        if not ours_alive and not _compiling_now():
+            return ready()
+        time.sleep(0.2)
+    return ready()
+
+
+def _compile_here() -> int:
+    """The background compiler: one at a time (a lock).  Not niced: a long run waits for
+    it, a short one (under PY_BUDGET) never starts it."""
+    folder = _folder()
+    folder.mkdir(parents=True, exist_ok=True)
+    lock = open(folder / "rollingdisk-jit.lock", "a")  # noqa: SIM115 - held until exit
+    try:
+        import fcntl
+
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except ImportError:  # pragma: no cover - no fcntl (Windows): numba's atomic writes
+        pass
+    except OSError:
+        return 0  # another process is compiling
+    if ready():
+        return 0
+    from rollingdisk.integrate.simulation import jit_compile
+
+    jit_compile()  # compiles, fills the cache and marks it ready
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(_compile_here())

@@ -1,0 +1,172 @@
+"""The disk model: thickness, inertia (eq. 10), the grounds, and the physical scale.
+
+Everything in the library is computed in the paper's dimensionless units: mass ``m``,
+radius ``a`` and gravity ``g`` are set to one, so lengths are in units of ``a``, times in
+units of ``sqrt(a/g)``, speeds in ``sqrt(a g)``, angular speeds in ``sqrt(g/a)``, forces in
+``m g`` and energies in ``m g a``.  A :class:`Disk` may carry an optional physical scale
+(radius, mass, gravity); its ``*_to_si`` methods are the one place where dimensionless
+numbers become SI numbers.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from rollingdisk.model.geometry import h_tilde
+from rollingdisk.util.checks import check_real
+from rollingdisk.util.errors import ParameterError
+
+__all__ = ["Disk", "DEFAULT_H", "GROUNDS", "H_MAX", "STANDARD_GRAVITY", "check_ground", "check_h"]
+
+
+
+#: The two kinds of ground the theory covers: no slip, or no friction.
+GROUNDS = ("rough", "smooth")
+
+
+#: Largest half-thickness accepted (a bar 1e8 radii long): far beyond it h^4 and the
+#: like in the stability formulas leave floating-point range.
+H_MAX = 1e8
+
+
+#: The default disk of the command line and the atlas: close to a commercial Euler's disk
+#: (radius 37.5 mm, 12.7 mm thick: h = 6.35 / 37.5 = 0.17).
+DEFAULT_H = 0.17
+
+
+#: Standard gravity [m/s^2], the default physical gravity of a :class:`Disk`.
+STANDARD_GRAVITY = 9.80665
+
+
+def check_h(h) -> float:
+    """``h`` as a float, or ``ValueError``: the half-thickness must lie in ``[0, H_MAX]``."""
+    return check_real("h", h, low=0.0, high=H_MAX)
+
+
+def check_ground(ground) -> str:
+    """Return ``ground`` if it is ``"rough"`` or ``"smooth"``, else raise ``ValueError``."""
+    if ground not in GROUNDS:
+        raise ParameterError(f"ground must be one of {GROUNDS}, got {ground!r}")
+    return ground
+
+
+@dataclass(frozen=True)
+class Disk:
+    """A homogeneous rigid disk (cylinder, bar) of radius ``a`` and thickness ``2h``.
+
+    Parameters
+    ----------
+    h : float
+        Half-thickness in units of the radius, ``0 <= h <= 1e8`` (the paper's ``h``;
+        ``h = 0`` is the infinitely thin disk, large ``h`` a cylinder or a bar; the upper
+        bound keeps every formula within floating-point range).
+    radius : float, optional
+        Physical radius ``a`` [m], ``> 0``. Needed only for conversions to SI units.
+    mass : float, optional
+        Physical mass ``m`` [kg], ``> 0``. Needed only for forces and energies in SI units.
+    gravity : float, optional
+        Gravitational acceleration ``g`` [m/s^2], ``> 0``; standard gravity by default.
+
+    Examples
+    --------
+    >>> disk = Disk(h=0.17)
+    >>> round(disk.k1_sq, 6)  # eq. (10): 1/4 + h^2/3
+    0.259633
+    >>> coin = Disk.from_dimensions(radius=0.0125, thickness=0.002, mass=0.0075)
+    >>> round(coin.h, 3)
+    0.08
+    """
+
+    h: float
+    radius: float | None = None
+    mass: float | None = None
+    gravity: float = STANDARD_GRAVITY
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "h", check_h(self.h))
+        if self.radius is not None:
+            object.__setattr__(self, "radius",
+                               check_real("radius", self.radius, low=0.0, low_open=True))
+        if self.mass is not None:
+            object.__setattr__(self, "mass", check_real("mass", self.mass, low=0.0, low_open=True))
+        object.__setattr__(self, "gravity",
+                           check_real("gravity", self.gravity, low=0.0, low_open=True))
+
+    @classmethod
+    def from_dimensions(cls, radius: float, thickness: float, mass: float | None = None,
+                        gravity: float = STANDARD_GRAVITY) -> Disk:
+        """A disk from its physical radius and full thickness ``2h a`` (both in metres)."""
+        radius = check_real("radius", radius, low=0.0, low_open=True)
+        thickness = check_real("thickness", thickness, low=0.0)
+        return cls(h=thickness / (2.0 * radius), radius=radius, mass=mass, gravity=gravity)
+
+    # -- inertia, eq. (10) -------------------------------------------------------------
+    @property
+    def k1_sq(self) -> float:
+        """Squared radius of gyration about a diameter, ``1/4 + h^2/3`` (eq. 10)."""
+        return 0.25 + self.h * self.h / 3.0
+
+    @property
+    def k2_sq(self) -> float:
+        """Squared radius of gyration about the symmetry axis, ``1/2`` (eq. 10)."""
+        return 0.5
+
+    # -- contact geometry, eq. (4) -----------------------------------------------------
+    def h_tilde(self, theta: float) -> float:
+        """``h~ = h sgn(theta)``: the rim edge that touches the plane (eq. 4)."""
+        return h_tilde(self.h, theta)
+
+    def contact_point(self, theta: float) -> tuple[float, float]:
+        """Contact point P in the frame Cxyz, ``(y_P, z_P)`` (eq. 4), in units of ``a``."""
+        ht = self.h_tilde(theta)
+        s, c = math.sin(theta), math.cos(theta)
+        return s - ht * c, -(c + ht * s)
+
+    @property
+    def static_equilibrium_theta(self) -> float:
+        """The static-equilibrium tilt ``theta0 = arctan h`` (Figure 3b, eq. 30)."""
+        return math.atan(self.h)
+
+    # -- units ---------------------------------------------------------------------------
+    def _need(self, *names: str) -> None:
+        missing = [n for n in names if getattr(self, n) is None]
+        if missing:
+            raise ParameterError(
+                f"this Disk has no physical scale: give {' and '.join(missing)} "
+                f"(e.g. Disk(h={self.h:g}, radius=0.05, mass=0.4)) to convert to SI units"
+            )
+
+    @property
+    def time_unit(self) -> float:
+        """The unit of time ``sqrt(a/g)`` [s]."""
+        self._need("radius")
+        return math.sqrt(self.radius / self.gravity)
+
+    def length_to_si(self, x):
+        """Lengths: units of ``a`` -> metres."""
+        self._need("radius")
+        return x * self.radius
+
+    def time_to_si(self, t):
+        """Times: units of ``sqrt(a/g)`` -> seconds."""
+        return t * self.time_unit
+
+    def speed_to_si(self, v):
+        """Speeds: units of ``sqrt(a g)`` -> m/s."""
+        self._need("radius")
+        return v * math.sqrt(self.radius * self.gravity)
+
+    def angular_speed_to_si(self, w):
+        """Angular speeds: units of ``sqrt(g/a)`` -> rad/s."""
+        return w / self.time_unit
+
+    def force_to_si(self, f):
+        """Forces: units of ``m g`` -> newtons."""
+        self._need("mass")
+        return f * self.mass * self.gravity
+
+    def energy_to_si(self, e):
+        """Energies: units of ``m g a`` -> joules."""
+        self._need("mass", "radius")
+        return e * self.mass * self.gravity * self.radius

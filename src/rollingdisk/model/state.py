@@ -1,0 +1,61 @@
+"""State layouts of the equations of motion on each ground, named as in the paper."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rollingdisk.model.disk import check_ground
+from rollingdisk.util.errors import ParameterError, ParameterTypeError
+
+__all__ = ["ROUGH_STATE", "SMOOTH_STATE", "state_names", "state_index"]
+
+
+
+#: Names of the rough-ground state components, in order.
+ROUGH_STATE = ("X_C", "Y_C", "psi", "theta", "phi", "omega1", "omega2", "omega3")
+
+
+#: Names of the smooth-ground state components, in order.
+SMOOTH_STATE = ("X_C", "Y_C", "V_X", "V_Y", "psi", "theta", "phi", "omega1", "omega2", "omega3")
+
+
+def state_names(ground: str) -> tuple[str, ...]:
+    """The names of the state components for ``ground`` (``"rough"`` or ``"smooth"``)."""
+    return ROUGH_STATE if check_ground(ground) == "rough" else SMOOTH_STATE
+
+
+def state_index(ground: str, name: str) -> int:
+    """Index of the component ``name`` in the state vector of ``ground``."""
+    names = state_names(ground)
+    if name not in names:
+        raise ParameterError(f"name must be one of {names} on {ground} ground, got {name!r}")
+    return names.index(name)
+
+
+def _reduced_state(rough, y):
+    """``(theta, omega1, omega2, omega3)`` out of a state vector of either ground, or of a
+    reduced state (4 components, returned as they are)."""
+    if y.shape[0] == 4:
+        return y[0], y[1], y[2], y[3]
+    if rough:
+        return y[3], y[5], y[6], y[7]
+    return y[5], y[7], y[8], y[9]
+
+
+def _shape_error(ground: str, y) -> ParameterError:
+    names = state_names(ground)
+    return ParameterError(f"y must have {len(names)} components on {ground} ground "
+                          f"({', '.join(names)}), got {np.shape(y)}")
+
+
+def _as_state(ground: str, y) -> np.ndarray:
+    """``y`` as a float array of states: right length, finite (never a silent NaN)."""
+    try:
+        y = np.asarray(y, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterTypeError(f"y must be an array of real numbers, got {y!r}") from None
+    if y.shape[:1] != (len(state_names(ground)),):
+        raise _shape_error(ground, y)
+    if not np.all(np.isfinite(y)):
+        raise ParameterError("y must be finite (no NaN or infinity)")
+    return y
