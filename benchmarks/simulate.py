@@ -129,7 +129,7 @@ def main(argv=None) -> int:
 def uncompiled(disk, y0, T, rtol):
     """The same integrator run uncompiled (rollingdisk.integrate.pycore), as a short run does."""
     from rollingdisk.integrate import jit as _jit
-    from rollingdisk.integrate import simulation as _simulate
+    from rollingdisk.integrate import jit as _simulate
 
     core, budget = _simulate._core, _jit.PY_BUDGET
     _simulate._core, _jit.PY_BUDGET = None, float("inf")

@@ -27,7 +27,7 @@ def test_out_folder_complete(tmp_path, capsys):
     png, csv, js = (out / name for name in EULER_DISK_FILES)
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     s = json.loads(js.read_text())
-    assert s["status"] == "completed" and s["end"] == "fell flat"
+    assert s["status"] == "completed" and s["end"] == "fell-flat"
     assert set(s["exponents"]) == set(s["predicted"]) == {"alpha", "Omega", "contact_speed"}
     data = np.genfromtxt(csv, delimiter=",", names=True)
     assert data["t"][-1] == pytest.approx(s["t_end"], rel=1e-10)

@@ -197,7 +197,7 @@ def test_mu_zero_is_smooth_ground():
 # ------------------------------------------------------------------ the toy
 def test_toy_falls_flat_with_predicted_exponents(toy_run):
     r = toy_run
-    assert r.status == "completed" and r.end == "fell flat", r.message
+    assert r.status == "completed" and r.end == "fell-flat", r.message
     assert r.alpha[-1] == pytest.approx(1e-3, rel=1e-9) and r.alpha[-2] > 1e-3  # located
     assert 90.0 < r.t_end_s < 110.0  # the toy's quoted spin time, ~100 s (chosen c)
     assert r.t0 > r.t_end  # the power law's alpha = 0 lies beyond alpha_end
@@ -216,10 +216,10 @@ def test_lift_off_located():
     """A hard kick (omega1 = 2) lifts the toy: F_z (eq. 11) reaches 0, located on the
     step's dense output; a harder one (4) needs a pull from the plane at t = 0."""
     r = run_euler_disk(kick=2.0, t_max=50.0, predict=False)
-    assert r.status == "completed" and r.end == "lifted off", r.message
+    assert r.status == "completed" and r.end == "lift-off", r.message
     assert abs(r.F_z[-1]) < 1e-9 and np.all(r.F_z[:-1] > 0)
     r = run_euler_disk(kick=4.0, t_max=50.0, predict=False)
-    assert r.end == "lifted off" and "at the start" in r.message and r.t.size == 1
+    assert r.end == "lift-off" and "at the start" in r.message and r.t.size == 1
     assert r.F_z[0] < 0
 
 
@@ -228,7 +228,7 @@ def test_toy_with_air_film():
     """Moffatt's film: exponents near 1/3, -1/6 on the window where the disk still follows
     the steady family (it leaves it below alpha ~ 0.01, see docs/friction.md)."""
     r = run_euler_disk(EulerDisk(air_viscosity=AIR_VISCOSITY))
-    assert r.status == "completed" and r.end == "fell flat", r.message
+    assert r.status == "completed" and r.end == "fell-flat", r.message
     assert r.energy_balance <= 1e-9
     assert r.dissipated["air"][-1] > 0.1
     assert r.t_end == pytest.approx(r.predicted_t_end, rel=0.02)
@@ -271,7 +271,7 @@ def test_collapsing_steps_are_a_status(monkeypatch):
 def test_progress_fractions():
     seen = []
     r = run_euler_disk(EulerDisk(alpha0=0.05), predict=False, progress=seen.append)
-    assert r.end == "fell flat"
+    assert r.end == "fell-flat"
     assert seen[-1] == 1.0 and len(seen) < 400
     assert all(0.0 <= a <= b <= 1.0 for a, b in zip(seen, seen[1:]))
 

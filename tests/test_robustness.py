@@ -270,9 +270,9 @@ def test_sweep_api_of_the_edges(tmp_path_factory, value, which):
 
     import rollingdisk as rd
     from rollingdisk.atlas import build as atlas
-    from rollingdisk.plotting import plots as plotting
     from rollingdisk.plotting import animation as animation
     from rollingdisk.plotting import figures as figures
+    from rollingdisk.plotting import plots as plotting
 
     out = tmp_path_factory.mktemp("api")
     calls = {

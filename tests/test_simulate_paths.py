@@ -19,7 +19,7 @@ import pytest
 
 from rollingdisk import Disk, energy_drift, jit_compile, simulate, steady_motion
 from rollingdisk.integrate import jit as _jit
-from rollingdisk.integrate import simulation as _simulate
+from rollingdisk.integrate import jit as _simulate
 
 SRC = os.path.dirname(os.path.dirname(_jit.__file__))
 

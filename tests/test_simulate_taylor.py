@@ -24,7 +24,7 @@ from rollingdisk.util.errors import ParameterError
 @pytest.fixture(scope="module")
 def core():
     rd.jit_compile()
-    from rollingdisk.integrate import simulation as _simulate
+    from rollingdisk.integrate import jit as _simulate
 
     return _simulate._core
 

@@ -49,6 +49,7 @@ import numpy as np
 from rollingdisk.friction import coulomb as _cl
 from rollingdisk.model.disk import Disk
 from rollingdisk.model.geometry import _geometry
+from rollingdisk.model.outcomes import AT_REST, EDGE_CONTACT, FELL_FLAT, LIFT_OFF, names
 from rollingdisk.util.checks import check_int, check_real
 from rollingdisk.util.errors import ParameterError
 
@@ -58,9 +59,10 @@ __all__ = ["EulerDisk", "EulerDiskResult", "run_euler_disk", "predicted_exponent
 
 #: Dynamic viscosity of air at 20 C [Pa s] (CRC Handbook), the default of ``--air``.
 AIR_VISCOSITY = 1.81e-5
-#: How a run can end: the three physical ends, and "edge" (contact passes to the other rim
-#: edge, theta = 0, outside the model) -- each with status "completed".
-END_KINDS = ("fell flat", "lifted off", "came to rest", "edge contact")
+#: How a run can end (names of :mod:`rollingdisk.model.outcomes`): the three physical ends,
+#: and edge contact (contact passes to the other rim edge, theta = 0, outside the model) --
+#: each with status "completed".
+END_KINDS = names(FELL_FLAT, LIFT_OFF, AT_REST, EDGE_CONTACT)
 #: Quantities whose exponents are fitted and predicted.
 EXPONENT_NAMES = ("alpha", "Omega", "contact_speed")
 #: Default fit window (alpha range) of the exponents.
@@ -618,7 +620,7 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
     status, message = "failed", ""
     F_z0 = _rhs(h, mu, u_s, c_roll, c_air, eps, x0)[1]
     if F_z0 < 0.0:  # the kick asks for a pull from the plane: no motion in contact at all
-        end, status = "lifted off", "completed"
+        end, status = "lift-off", "completed"
         message = f"lifted off at the start: F_z(0) = {F_z0:.4g} < 0 (eq. 11)"
     n_short = 0
     shown = -1.0
@@ -661,16 +663,16 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
                 progress(done)
         event = None  # a function of the state that changes sign at the end
         if alpha <= alpha_end:
-            end, message = "fell flat", f"fell flat: alpha = {alpha_end:g}"
+            end, message = "fell-flat", f"fell flat: alpha = {alpha_end:g}"
             event = lambda z: math.pi / 2 - abs(z[2]) - alpha_end  # noqa: E731
         elif F_z < 0.0:
-            end, message = "lifted off", "lifted off: F_z = 0 (eq. 11)"
+            end, message = "lift-off", "lifted off: F_z = 0 (eq. 11)"
             event = lambda z: _rhs(h, mu, u_s, c_roll, c_air, eps, z)[1]  # noqa: E731
         elif math.copysign(1.0, x[2]) != side:
-            end, message = "edge contact", "theta = 0: the other rim edge touches"
+            end, message = "edge-contact", "theta = 0: the other rim edge touches"
             event = lambda z: z[2] * side  # noqa: E731
         elif max(abs(v) for v in x[:2]) < 1e-10 and max(abs(v) for v in x[3:6]) < 1e-10:
-            end, message = "came to rest", "came to rest: |omega|, |v_C| < 1e-10"
+            end, message = "at-rest", "came to rest: |omega|, |v_C| < 1e-10"
         if end is not None:
             if event is not None:  # locate it on the step's dense output
                 ts[-1], xs[-1] = _locate(solver.dense_output(), event, t_old, solver.t)

@@ -29,10 +29,13 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
 from rollingdisk.friction import coulomb as _cl
+from rollingdisk.friction.coulomb import MODE_NAMES, coulomb_contact
 from rollingdisk.friction.ground import Coulomb
 from rollingdisk.integrate.simulation import _check_state
 from rollingdisk.integrate.trajectory import Trajectory, Transition
@@ -193,6 +196,18 @@ def _DOP853():
 def _inertial_slip(h, z):
     u_x, u_y = _cl._slip_velocity(h, z)
     return _cl._to_inertial(z[4], u_x, u_y)
+
+
+@dataclass(frozen=True, eq=False)
+class CoulombTrajectory(Trajectory):
+    """A :class:`~rollingdisk.Trajectory` on Coulomb ground (what :func:`simulate_coulomb`
+    returns): the contact force at each stored point follows from that point's mode."""
+
+    @cached_property
+    def _F(self):
+        rows = [coulomb_contact(self.disk, self.ground, MODE_NAMES[m], self.y[:, i])
+                for i, m in enumerate(self.mode)]
+        return tuple(np.array([r[k] for r in rows]) for k in ("F_x", "F_y", "F_z"))
 
 
 def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *,
@@ -400,7 +415,7 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     Z = np.array(zs).T
     if progress is not None:
         progress(1.0)
-    return Trajectory(disk=disk, ground=ground, t=np.array(ts), y=Z[:10], status=status,
+    return CoulombTrajectory(disk=disk, ground=ground, t=np.array(ts), y=Z[:10], status=status,
                       message=message, n_steps=n_steps, n_rhs=run.n_rhs, method="dop853-scipy",
                       t_event=t_event, wall_time=wall, mode=np.array(modes),
                       transitions=tuple(transitions),

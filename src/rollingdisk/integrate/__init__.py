@@ -25,6 +25,9 @@ from rollingdisk.integrate.events import (
 from rollingdisk.integrate.events import (
     guard_events as guard_events,
 )
+from rollingdisk.integrate.jit import (
+    jit_compile as jit_compile,
+)
 from rollingdisk.integrate.measure import (
     LINEAR_RANGE as LINEAR_RANGE,
 )
@@ -57,9 +60,6 @@ from rollingdisk.integrate.simulation import (
 )
 from rollingdisk.integrate.simulation import (
     MAX_T as MAX_T,
-)
-from rollingdisk.integrate.simulation import (
-    jit_compile as jit_compile,
 )
 from rollingdisk.integrate.simulation import (
     simulate as simulate,

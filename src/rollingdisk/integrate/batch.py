@@ -19,6 +19,8 @@ process computes it.
 
 from __future__ import annotations
 
+import contextlib
+
 import numba
 import numpy as np
 
@@ -41,11 +43,36 @@ from rollingdisk.integrate.numba_core import (
     _tay_step_size,
     initial_step,
 )
+from rollingdisk.model.outcomes import (
+    COMPLETED,
+    EDGE_CONTACT,
+    FAILED,
+    FELL_FLAT,
+    LIFT_OFF,
+    outcome,
+)
 
-# status codes (as in rollingdisk.integrate.numba_core)
-COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED = 1, 2, 3, 4, 5
-STATUS_NAMES = {1: "completed", 2: "lift-off", 3: "edge-contact", 4: "fell-flat",
-                5: "failed"}
+
+def set_threads(n: int) -> int:
+    """Run the batch kernels on ``n`` numba threads (clipped to ``[1, NUMBA_NUM_THREADS]``);
+    return the number set."""
+    numba.set_num_threads(max(1, min(int(n), numba.config.NUMBA_NUM_THREADS)))
+    return numba.get_num_threads()
+
+
+@contextlib.contextmanager
+def threads(n: int | None = None):
+    """The batch kernels in the block run on ``n`` numba threads (as they are for ``None``);
+    the previous number is restored after.  Yields the number in force."""
+    old = numba.get_num_threads()
+    try:
+        yield old if n is None else set_threads(n)
+    finally:
+        numba.set_num_threads(old)
+
+
+#: Status code -> name of the outcomes a batch kernel can end with (rollingdisk.model.outcomes).
+STATUS_NAMES = {c: outcome(c).name for c in (COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED)}
 
 # summary columns returned by run_batch (float64 array of shape (n, NCOL))
 COLUMNS = ("status", "t_end", "max_dtheta", "n_crossings", "period", "t_grow_lo",

@@ -20,6 +20,7 @@ import time
 import numpy as np
 
 from rollingdisk.integrate import events as _ev
+from rollingdisk.integrate import jit as _jit
 from rollingdisk.model.equations import equations_of_motion
 from rollingdisk.model.state import state_index
 
@@ -78,11 +79,8 @@ def _pick_core(state, elapsed, fraction):
     it then); else the uncompiled one, after starting a background compile of a cold
     cache.  A run far from done on a machine with no idle core waits for that compiler
     rather than slow it down (``_jit.worth_waiting``)."""
-    from rollingdisk.integrate import jit as _jit
-    from rollingdisk.integrate import simulation as _simulate
-
-    if _simulate._core is not None:
-        return _simulate._core, True
+    if _jit._core is not None:
+        return _jit._core, True
     if elapsed >= _jit.PY_BUDGET:
         if not _jit.ready() and not state.get("spawned"):
             state["spawned"] = True
@@ -92,8 +90,8 @@ def _pick_core(state, elapsed, fraction):
             state["waited"] = True
             _jit.wait_ready()
         if _jit.ready():
-            _simulate.jit_compile()  # loads from the on-disk cache
-            return _simulate._core, True
+            _jit.jit_compile()  # loads from the on-disk cache
+            return _jit._core, True
     from rollingdisk.integrate import pycore as _pycore
 
     return _pycore, False
@@ -157,11 +155,10 @@ def run_taylor(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_e
     """``simulate(method="taylor")``: the compiled Taylor integrator of
     :mod:`rollingdisk.integrate.taylor` (compiled or loaded first, as :func:`jit_compile`), run in
     chunks of about ``_CHUNK_SECONDS`` so that progress and signals come through."""
-    from rollingdisk.integrate import simulation as _simulate
     from rollingdisk.integrate import taylor as _taylor
 
-    _simulate.jit_compile()
-    core = _simulate._core
+    _jit.jit_compile()
+    core = _jit._core
     rough = ground == "rough"
     use = np.zeros(3, dtype=np.bool_)
     for g in guards:

@@ -34,18 +34,25 @@ import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground
 from rollingdisk.model.equations import _check_disk, _side_normal_force
+from rollingdisk.model.outcomes import (  # noqa: F401 - the codes, for the kernels
+    COMPLETED,
+    EDGE_CONTACT,
+    FAILED,
+    FELL_FLAT,
+    LIFT_OFF,
+    RUNNING,
+    STEP_BUDGET,
+    names,
+    outcome,
+)
 from rollingdisk.model.state import _reduced_state, state_index
 
 __all__ = ["GuardEvent", "LiftOff", "EdgeContact", "FellFlat", "GUARDS", "STATUSES",
            "guard_events"]
 
-# integer codes shared with the compiled integrator (rollingdisk.integrate.numba_core)
-RUNNING, COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED, STEP_BUDGET = range(7)
-
-#: Possible values of :attr:`rollingdisk.Trajectory.status`.
-STATUSES = ("completed", "lift-off", "edge-contact", "fell-flat", "failed", "step-budget")
-STATUS_OF_CODE = {COMPLETED: "completed", LIFT_OFF: "lift-off", EDGE_CONTACT: "edge-contact",
-                  FELL_FLAT: "fell-flat", FAILED: "failed", STEP_BUDGET: "step-budget"}
+#: Possible values of :attr:`rollingdisk.Trajectory.status` (see :mod:`rollingdisk.model.outcomes`).
+STATUSES = names(COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED, STEP_BUDGET)
+STATUS_OF_CODE = {outcome(s).code: s for s in STATUSES}
 
 
 class GuardEvent:

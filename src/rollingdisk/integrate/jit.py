@@ -32,7 +32,10 @@ import hashlib
 import importlib.util
 import os
 import sys
+import time
 from pathlib import Path
+
+import numpy as np
 
 #: Seconds of uncompiled integration after which a run switches to the compiled code
 #: (about what loading it costs, so a run never pays more than twice the best choice).
@@ -162,8 +165,6 @@ def _compiling_now() -> bool:
 def wait_ready(timeout: float = MAX_WAIT) -> bool:
     """Wait (polling, interruptible) until the cache is ready; False if no compiler is at
     work any more without having made it ready, or after ``timeout`` seconds."""
-    import time
-
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
         if ready():
@@ -191,10 +192,66 @@ def _compile_here() -> int:
         return 0  # another process is compiling
     if ready():
         return 0
-    from rollingdisk.integrate.simulation import jit_compile
-
     jit_compile()  # compiles, fills the cache and marks it ready
     return 0
+
+
+# ---------------------------------------------------------------------------- numba core
+_core = None
+_compile_time = None
+
+
+def jit_compile() -> float:
+    """Import (and on first use compile) the numba integrator; return the seconds it took.
+
+    The compiled code is cached on disk (``numba`` ``cache=True``), so after the first
+    run this is the time to load it.  A cache left stale by an edit of the kernels in
+    :mod:`rollingdisk.model.equations` (eqs. 11, 38, 49) is detected and recompiled.
+    :func:`simulate` does not need it: it starts uncompiled and loads the compiled code
+    once a run is long enough to be worth it, filling a cold cache in a background
+    process meanwhile (:mod:`rollingdisk.integrate.jit`).  Call it to compile (or load) up front,
+    e.g. before timing runs: every later run is compiled from its first step.
+
+    Returns
+    -------
+    float
+        Seconds spent importing, compiling or loading, and checking the compiled code on
+        the first call; the same figure again on later calls (nothing is redone).
+
+    Raises
+    ------
+    ImportError
+        If numba is missing, or scipy lacks the DOP853 coefficients the core takes from it.
+    """
+    global _core, _compile_time
+    if _core is None:
+        t0 = time.perf_counter()
+        from rollingdisk.integrate import numba_core as core
+
+        y = np.array([0.0, 0.0, 0.0, 0.3, 0.0, 0.0, 1.0, 0.5])
+        ys = np.array([0.0, 0.0, 0.0, 0.0, 0.0, 0.3, 0.0, 0.0, 1.0, 0.5])
+        guards = np.ones(3, dtype=np.bool_)
+        for rough, y0 in ((True, y), (False, ys)):
+            atolv = np.full(y0.shape[0], 1e-8)
+            for keep in (False, True):
+                core.integrate(rough, 0.1, 0.0, y0, 1e-3, 1e-3, 1e-8, atolv, np.inf, 0.0,
+                               guards, 1.0, np.zeros(1), False, 10, 10, keep)
+                core.integrate(rough, 0.1, 0.0, y0, 1e-3, 1e-3, 1e-8, atolv, np.inf, 0.0,
+                               guards, 1.0, np.array([5e-4]), True, 10, 10, keep)
+            P = 6  # the Taylor integrator (method="taylor"); the order is a run-time value
+            for te, has in ((np.zeros(1), False), (np.array([5e-4]), True)):
+                core._tay_integrate(rough, 0.1, 0.0, y0, 1e-3, 1e-8, atolv, np.inf, guards,
+                                    1.0, te, has, 10, 10, P)
+        if not core.rhs_matches_kernels():  # a stale on-disk cache (see _numba_core)
+            core.recompile_all()
+            if not core.rhs_matches_kernels():  # pragma: no cover - would be a numba bug
+                raise RuntimeError("the compiled right-hand side disagrees with "
+                                   "rollingdisk.model.equations")
+        _compile_time = time.perf_counter() - t0
+        _core = core
+        mark_ready()
+    return _compile_time
+
 
 
 if __name__ == "__main__":

@@ -33,7 +33,7 @@ import math
 
 import numpy as np
 
-from rollingdisk.integrate.events import (
+from rollingdisk.model.outcomes import (
     COMPLETED,
     EDGE_CONTACT,
     FAILED,

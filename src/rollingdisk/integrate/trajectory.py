@@ -163,13 +163,9 @@ class Trajectory:
 
     @cached_property
     def _F(self):
-        if isinstance(self.ground, str):
-            return contact_force(self.disk, self.ground, self.y)
-        from rollingdisk.friction.coulomb import MODE_NAMES, coulomb_contact
-
-        rows = [coulomb_contact(self.disk, self.ground, MODE_NAMES[m], self.y[:, i])
-                for i, m in enumerate(self.mode)]
-        return tuple(np.array([r[k] for r in rows]) for k in ("F_x", "F_y", "F_z"))
+        # ideal grounds; a Coulomb run is a rollingdisk.friction.hybrid.CoulombTrajectory,
+        # which takes each point's force from its mode
+        return contact_force(self.disk, self.ground, self.y)
 
     @property
     def X_P(self) -> np.ndarray:

@@ -342,12 +342,10 @@ def _setup_circles(g, second, h, theta0, v, tilt, kick):
 
 def _compute_chunk(spec: _Spec, k: int, n_threads: int | None = None) -> dict:
     """Summaries of chunk k (a dict of 1-d arrays); deterministic."""
-    import numba
-
     from rollingdisk.integrate import batch as core
 
     if n_threads is not None:
-        numba.set_num_threads(max(1, min(n_threads, numba.config.NUMBA_NUM_THREADS)))
+        core.set_threads(n_threads)
     i0 = k * spec.chunk
     i1 = min(spec.n, i0 + spec.chunk)
     x0, h, theta_ref, varpi2, stable, a0 = _setup(spec, i0, i1)
@@ -383,11 +381,11 @@ def _done_chunks(folder: Path) -> set:
 
 
 def _dataset(spec: _Spec, cols: dict, executor: str):
+    from importlib.metadata import version
+
     import xarray as xr
 
     from rollingdisk.integrate.batch import STATUS_NAMES
-
-    from importlib.metadata import version
 
     __version__ = version("rollingdisk")
 
@@ -530,15 +528,12 @@ def run_sweep(grid: SweepGrid, t_end: float, *, perturbation: Perturbation | Non
     if executor == "dask":
         _run_dask(spec, todo, workers, dask_address, finished)
     else:
-        nt = 1 if executor == "serial" else workers
-        import numba
+        from rollingdisk.integrate import batch as core
 
-        old_nt = numba.get_num_threads()
-        try:
+        nt = 1 if executor == "serial" else workers
+        with core.threads() as all_threads:
             for k in todo:
-                finished(k, _compute_chunk(spec, k, nt if nt else old_nt))
-        finally:
-            numba.set_num_threads(old_nt)
+                finished(k, _compute_chunk(spec, k, nt if nt else all_threads))
     if folder is not None:
         parts = [dict(np.load(folder / f"chunk_{k:06d}.npz")) for k in range(n_chunks)]
     else:
@@ -689,20 +684,13 @@ def _basin_round(grid, kicks, t_end, executor, workers, chunk, rtol, atol, max_s
     k = np.ravel(kicks)
     x0[:, 1] = k
     ok = np.all(np.isfinite(x0), axis=1)
-    import numba
-
     from rollingdisk.integrate import batch as core
 
-    nt = 1 if executor == "serial" else (workers or numba.get_num_threads())
-    old = numba.get_num_threads()
-    numba.set_num_threads(min(nt, numba.config.NUMBA_NUM_THREADS))
-    try:
+    with core.threads(1 if executor == "serial" else workers):
         out = np.full((spec.n, core.NCOL), np.nan)
         if ok.any():
             out[ok] = _kernel(method, grid.ground == "rough", h[ok], x0[ok], theta_ref[ok],
                               k[ok], t_end, rtol, atol, max_steps)
-    finally:
-        numba.set_num_threads(old)
     bounded = (out[:, 0] == core.COMPLETED) & (out[:, 2] <= BOUND_FACTOR * k)
     import xarray as xr
 

@@ -35,8 +35,7 @@ from .printed import (
     w3,
     yP,
 )
-from .rows import verdict
-from .sections34 import (
+from .registry import (
     Omega_from,
     _deg,
     _Omega0_sq,
@@ -47,6 +46,7 @@ from .sections34 import (
     derived,
     kinematics,
 )
+from .rows import verdict
 
 
 # ---- section 3: kinematics, from the derivation at a constant state -----------------------

@@ -16,8 +16,8 @@ import sympy as sp
 
 from .identity import changes_sign_at
 from .printed import PRINTED, R, c, h, ht, p, q, rC, sP0, sP1, sP2, w1, w2, w3
+from .registry import _deg, _Omega0_sq, _quoted, _reduced, _same, check, derived
 from .rows import verdict
-from .sections34 import _deg, _Omega0_sq, _quoted, _reduced, _same, check, derived
 
 
 # ---- section 4 ----------------------------------------------------------------------------

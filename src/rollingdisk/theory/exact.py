@@ -62,6 +62,7 @@ from rollingdisk.model.equations import (
     _smooth_omega_dot,
 )
 from rollingdisk.model.geometry import _geometry
+from rollingdisk.model.outcomes import BOUNDED, EDGE_CONTACT, FELL_FLAT, LIFT_OFF, STEADY, names
 from rollingdisk.model.state import _as_state, state_index
 from rollingdisk.util.checks import check_real
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
@@ -70,7 +71,7 @@ __all__ = ["ExactMotion", "exact_motion", "exact_steady", "Backbone", "backbone"
            "thin_disk_omega3", "EXACT_STATUSES"]
 
 #: Possible values of :attr:`ExactMotion.status`.
-EXACT_STATUSES = ("bounded", "steady", "lift-off", "edge-contact", "fell-flat")
+EXACT_STATUSES = names(BOUNDED, STEADY, LIFT_OFF, EDGE_CONTACT, FELL_FLAT)
 
 _RTOL = 1e-13  # the theta-ODE's tolerance
 _FLAT = 0.5 * math.pi - 1e-9  # |theta| where the theta-ODE stops: the disk lies flat
