@@ -356,3 +356,16 @@ def test_python_m_serves_and_stops_on_sigint():
             proc.kill()
     assert proc.returncode == 130
     assert "Traceback" not in err and "stopped" in err
+
+
+def test_static_files_are_package_data():
+    import fnmatch
+    import tomllib
+
+    conf = tomllib.loads((SRC.parent / "pyproject.toml").read_text())
+    globs = conf["tool"]["setuptools"]["package-data"]["rollingdisk.explore"]
+    static = SRC / "rollingdisk" / "explore" / "static"
+    files = sorted(p.name for p in static.iterdir())
+    assert files == ["explore.css", "explore.js", "index.html"]
+    for name in files:  # each shipped in the wheel
+        assert any(fnmatch.fnmatch(f"static/{name}", g) for g in globs), name

@@ -252,7 +252,7 @@ const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
                          a[0] * b[1] - a[1] * b[0]];
 const norm = (a) => { const l = Math.hypot(a[0], a[1], a[2]) || 1; return [a[0] / l, a[1] / l, a[2] / l]; };
-const LIGHT = norm([0.4, -0.5, 0.8]);
+const LIGHT = norm([0.3, -0.4, 0.9]);
 
 function camera(target) {
   const { az, el, dist } = state.cam;
@@ -294,7 +294,7 @@ function polyline(ctx, cam, pts, color, width) {
 }
 
 function shade(base, n) {
-  const k = 0.35 + 0.65 * Math.max(0, dot(n, LIGHT));
+  const k = 0.55 + 0.45 * Math.max(0, dot(n, LIGHT));
   return `rgb(${Math.round(base[0] * k)},${Math.round(base[1] * k)},${Math.round(base[2] * k)})`;
 }
 
@@ -357,7 +357,7 @@ function drawView() {
     const pts = [];
     for (let i = 0; i < N; i++) pts.push(rim(side, 2 * Math.PI * i / N));
     fill(pts, shade(metal, n));
-    polyline(ctx, cam, [centre, rim(side, 0)], "#1b1b1b", 2);   // turns with phi
+    polyline(ctx, cam, [centre, rim(side, 0)], "#b03030", 2.5);   // turns with phi
   }
   // contact point
   const q = cam.project([tr.X_P[k], tr.Y_P[k], 0]);
@@ -414,8 +414,8 @@ function wire() {
   $("map").addEventListener("click", (ev) => {
     if (!state.map) return;
     const canvas = $("map"), rect = canvas.getBoundingClientRect(), box = plotBox(canvas);
-    const px = (ev.clientX - rect.left) * canvas.width / rect.width;
-    const py = (ev.clientY - rect.top) * canvas.height / rect.height;
+    const px = (ev.clientX - rect.left - canvas.clientLeft) * canvas.width / canvas.clientWidth;
+    const py = (ev.clientY - rect.top - canvas.clientTop) * canvas.height / canvas.clientHeight;
     if (px < box.x0 || px > box.x0 + box.w || py < box.y0 || py > box.y0 + box.h) return;
     const [theta0, y] = fromPixel(box, px, py);
     select(theta0, state.map.y.name, y);
