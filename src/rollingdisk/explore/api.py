@@ -33,8 +33,9 @@ N_MAX = 121
 #: Longest simulation (time units sqrt(a/g)) and most points sent back.
 T_END_MAX = 200.0
 POINTS_MAX = 4000
-#: Step budget of one simulation (uncompiled DOP853, about 0.15 ms a step).
-SIM_MAX_STEPS = 3000
+#: Step budget of one simulation (uncompiled DOP853, about 0.15 ms a step: 0.3 s, under
+#: the 0.4 s after which rd.simulate loads its compiled integrator, about 1 s once).
+SIM_MAX_STEPS = 2000
 #: Half-thickness accepted (units of the radius).
 H_RANGE = (0.0, 100.0)
 #: Largest |Omega0| (and |omega30|) of a simulated motion: faster ones need more steps
