@@ -220,7 +220,13 @@ def explore(h: float = 0.17, ground: str = "rough", host: str = "127.0.0.1", por
     >>> explore(h=0.17, ground="rough")          # doctest: +SKIP
     rollingdisk explore: serving http://127.0.0.1:43117/?h=0.17&ground=rough (Ctrl-C stops)
     """
+    from .command import is_loopback
+
     server = make_server(h, ground, host, port, verbose=verbose)
+    if not is_loopback(host):
+        print(f"rollingdisk explore: warning: binding {host}, beyond localhost: anyone who can "
+              "reach this machine can use the explorer (there is no authentication)",
+              file=sys.stderr, flush=True)
     try:
         print(f"rollingdisk explore: serving {server.url} (Ctrl-C stops)", flush=True)
         if open_browser:
