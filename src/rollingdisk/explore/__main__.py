@@ -1,0 +1,23 @@
+"""``python -m rollingdisk.explore``: the ``rollingdisk explore`` command on its own."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from .command import configure, run
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m rollingdisk")
+    sub = parser.add_subparsers(dest="command")
+    configure(sub)
+    args = parser.parse_args(["explore", *(sys.argv[1:] if argv is None else argv)])
+    try:
+        return run(args)
+    except KeyboardInterrupt:  # Ctrl-C before the server started
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,139 @@
+"""``rollingdisk explore``: the command-line entry of the explorer.
+
+:func:`configure` adds the subcommand to an ``argparse`` subparsers object and
+:func:`run` runs it (``args.handler`` is set to :func:`run`, as for every subcommand of
+:mod:`rollingdisk.cli`).  ``python -m rollingdisk.explore`` runs the same command alone.
+
+Exit status: 130 on Ctrl-C (after a clean stop, no traceback); 2 when the address cannot
+be bound (port in use, unknown host).
+"""
+
+from __future__ import annotations
+
+import argparse
+import errno
+import ipaddress
+import sys
+
+import rollingdisk as rd
+
+from . import api
+
+__all__ = ["configure", "run", "DEFAULT_PORT", "is_loopback"]
+
+#: The port tried first (``--port 0`` picks any free one).
+DEFAULT_PORT = 8765
+DEFAULT_HOST = "127.0.0.1"
+
+
+def is_loopback(host: str) -> bool:
+    """Whether ``host`` names this machine only (``localhost``, ``127.x.x.x``, ``::1``)."""
+    if host.lower() == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host.strip("[]")).is_loopback
+    except ValueError:
+        return False
+
+
+def _type(check):
+    def parse(text: str):
+        try:
+            return check(text)
+        except (ValueError, TypeError) as exc:
+            raise argparse.ArgumentTypeError(str(exc)) from None
+
+    return parse
+
+
+def _h(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        value = text
+    return rd.check_real("h", value, low=api.H_RANGE[0], high=api.H_RANGE[1])
+
+
+def _port(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        value = text
+    return rd.check_int("port", value, low=0, high=65535)
+
+
+def configure(subparsers) -> argparse.ArgumentParser:
+    """Add the ``explore`` subcommand to ``subparsers`` (from ``add_subparsers``).
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        The subcommand's parser (its ``handler`` default is :func:`run`).
+    """
+    p = subparsers.add_parser(
+        "explore", help="interactive explorer in the web browser: maps, steady motions, 3D",
+        description="Serve an interactive explorer of steady motions on this machine and "
+                    "open it in the web browser: click a map for a steady motion's numbers, "
+                    "watch it kicked in 3D. Everything is served locally (works offline).")
+    p.add_argument("--h", type=_type(_h), default=rd.DEFAULT_H,
+                   help=f"half-thickness the page starts with, in [0, 100] "
+                        f"(default {rd.DEFAULT_H})")
+    p.add_argument("--ground", choices=api.GROUNDS, default="rough",
+                   help="ground the page starts with (default rough)")
+    p.add_argument("--port", type=_type(_port), default=DEFAULT_PORT,
+                   help=f"TCP port (default {DEFAULT_PORT}; 0 picks any free port)")
+    p.add_argument("--host", default=None,
+                   help=f"address to bind (default {DEFAULT_HOST}, this machine only); an "
+                        "address beyond this machine serves anyone who can reach it")
+    p.add_argument("--no-browser", action="store_true",
+                   help="print the URL without opening a browser")
+    p.add_argument("--verbose", action="store_true", help="log every request on stderr")
+    p.set_defaults(handler=run)
+    return p
+
+
+def _say(line: str) -> None:
+    print(line, file=sys.stderr, flush=True)
+
+
+def run(args) -> int:
+    """Serve until Ctrl-C; the exit status.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        From the parser of :func:`configure`.
+
+    Returns
+    -------
+    int
+        130 after Ctrl-C (the server stopped cleanly); 2 if the address cannot be bound.
+    """
+    import webbrowser
+
+    from .server import make_server
+
+    # beyond this machine only when asked for by name, and then with a warning
+    host = args.host if args.host is not None else DEFAULT_HOST
+    if not is_loopback(host):
+        _say(f"rollingdisk explore: warning: binding {host}, beyond localhost: anyone who "
+             "can reach this machine can use the explorer (there is no authentication)")
+    try:
+        server = make_server(args.h, args.ground, host, args.port, verbose=args.verbose)
+    except OSError as exc:
+        hint = " (choose another with --port, or --port 0 for any free one)" \
+            if exc.errno == errno.EADDRINUSE else ""
+        _say(f"rollingdisk explore: error: cannot serve on {host}:{args.port}: "
+             f"{exc.strerror or exc}{hint}")
+        return 2
+    try:
+        print(f"rollingdisk explore: serving {server.url}  (Ctrl-C stops)", flush=True)
+        if not args.no_browser:
+            webbrowser.open(server.url)
+        server.serve_forever()
+    except KeyboardInterrupt:
+        _say("rollingdisk explore: stopped")
+        return 130
+    finally:
+        server.server_close()
+    return 0  # pragma: no cover - serve_forever returns only after shutdown()
