@@ -230,7 +230,8 @@ def test_paper_figures_rejects_unknown(tmp_path):
 def test_plotting_imports_without_matplotlib():
     """matplotlib is imported only inside the plot functions."""
     code = ("import sys\nsys.modules['matplotlib'] = None\n"
-            "import rollingdisk.plotting.plots, rollingdisk.plotting.animation, rollingdisk.plotting.figures, "
+            "import rollingdisk.plotting.plots, rollingdisk.plotting.animation, "
+            "rollingdisk.plotting.figures, "
             "rollingdisk.atlas.build\n")
     src = str(Path(__file__).resolve().parents[1] / "src")
     env = {**os.environ, "PYTHONPATH": src}

@@ -6,7 +6,7 @@ Every function here takes the query of one request (``{name: [values]}``, as
 No physics is written here or in the page's JavaScript: every number comes from
 :func:`rollingdisk.steady_motion`, :func:`rollingdisk.stability`,
 :func:`rollingdisk.existence_codes`, :func:`rollingdisk.mu_required_map`,
-:func:`rollingdisk.simulate_steady` and :func:`rollingdisk.animation.disk_pose`.
+:func:`rollingdisk.simulate_steady` and :func:`rollingdisk.plotting.animation.disk_pose`.
 
 Work per request is bounded: a map has at most ``N_MAX**2`` points, a simulation at most
 ``T_END_MAX`` time units, ``POINTS_MAX`` stored points and ``SIM_MAX_STEPS`` integration
@@ -305,10 +305,10 @@ def simulate_payload(query: dict, defaults: dict | None = None) -> dict:
     dict
         ``status``, ``message``, ``t_last``, ``n_steps``, the steady motion (``motion``)
         and per stored point the columns ``t, theta, psi, phi, X_C, Y_C, X_P, Y_P`` and
-        the drawn pose (:func:`rollingdisk.animation.disk_pose`): ``Z_C`` and the unit
+        the drawn pose (:func:`rollingdisk.plotting.animation.disk_pose`): ``Z_C`` and the unit
         vectors ``axis`` (eta), ``e1``, ``e2`` (body-fixed radii), as flat lists.
     """
-    from rollingdisk.animation import disk_pose
+    from rollingdisk.plotting.animation import disk_pose
 
     defaults = defaults or {}
     _check_names(query, ("ground", "h", "theta0", *_MOTION_PARAMS, "kick", "t_end", "points"))

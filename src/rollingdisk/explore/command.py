@@ -12,12 +12,13 @@ from __future__ import annotations
 
 import argparse
 import errno
-import ipaddress
 import sys
 
 import rollingdisk as rd
+from rollingdisk.util.checks import check_int, check_real
 
 from . import api
+from .server import is_loopback, make_server
 
 __all__ = ["configure", "run", "DEFAULT_PORT", "is_loopback"]
 
@@ -26,14 +27,6 @@ DEFAULT_PORT = 8765
 DEFAULT_HOST = "127.0.0.1"
 
 
-def is_loopback(host: str) -> bool:
-    """Whether ``host`` names this machine only (``localhost``, ``127.x.x.x``, ``::1``)."""
-    if host.lower() == "localhost":
-        return True
-    try:
-        return ipaddress.ip_address(host.strip("[]")).is_loopback
-    except ValueError:
-        return False
 
 
 def _type(check):
@@ -51,7 +44,7 @@ def _h(text: str) -> float:
         value = float(text)
     except ValueError:
         value = text
-    return rd.check_real("h", value, low=api.H_RANGE[0], high=api.H_RANGE[1])
+    return check_real("h", value, low=api.H_RANGE[0], high=api.H_RANGE[1])
 
 
 def _port(text: str) -> int:
@@ -59,7 +52,7 @@ def _port(text: str) -> int:
         value = int(text)
     except ValueError:
         value = text
-    return rd.check_int("port", value, low=0, high=65535)
+    return check_int("port", value, low=0, high=65535)
 
 
 def configure(subparsers) -> argparse.ArgumentParser:
@@ -111,7 +104,6 @@ def run(args) -> int:
     """
     import webbrowser
 
-    from .server import make_server
 
     # beyond this machine only when asked for by name, and then with a warning
     host = args.host if args.host is not None else DEFAULT_HOST

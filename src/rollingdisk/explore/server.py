@@ -16,6 +16,7 @@ thread; the work per request is bounded by :mod:`.api`.
 
 from __future__ import annotations
 
+import ipaddress
 import json
 import mimetypes
 import sys
@@ -153,14 +154,26 @@ class ExplorerServer(ThreadingHTTPServer):
         return thread
 
 
+def is_loopback(host: str) -> bool:
+    """Whether ``host`` names this machine only (``localhost``, ``127.x.x.x``, ``::1``)."""
+    if host.lower() == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host.strip("[]")).is_loopback
+    except ValueError:
+        return False
+
+
 def _checked(h, ground, host, port) -> tuple[float, str, str, int]:
     import rollingdisk as rd
+    from rollingdisk.model.disk import check_ground
+    from rollingdisk.util.checks import check_int, check_real
 
-    h = rd.check_real("h", h, low=api.H_RANGE[0], high=api.H_RANGE[1])
-    ground = rd.check_ground(ground)
+    h = check_real("h", h, low=api.H_RANGE[0], high=api.H_RANGE[1])
+    ground = check_ground(ground)
     if not isinstance(host, str) or not host:
         raise rd.ParameterTypeError(f"host must be a non-empty string, got {host!r}")
-    port = rd.check_int("port", port, low=0, high=65535)
+    port = check_int("port", port, low=0, high=65535)
     return h, ground, host, port
 
 
@@ -220,8 +233,6 @@ def explore(h: float = 0.17, ground: str = "rough", host: str = "127.0.0.1", por
     >>> explore(h=0.17, ground="rough")          # doctest: +SKIP
     rollingdisk explore: serving http://127.0.0.1:43117/?h=0.17&ground=rough (Ctrl-C stops)
     """
-    from .command import is_loopback
-
     server = make_server(h, ground, host, port, verbose=verbose)
     if not is_loopback(host):
         print(f"rollingdisk explore: warning: binding {host}, beyond localhost: anyone who can "

@@ -354,7 +354,8 @@ def _one_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rt
     Every step is sampled at ``_SAMPLES`` points (:func:`rollingdisk.integrate.taylor._tay_sample`):
     theta (crossings, thresholds, max |theta - theta0|, edge contact, falling flat) and F_z
     (lift-off).  Crossings, threshold times and guard events are located on the
-    polynomial (regula falsi; for F_z on its series, :func:`rollingdisk.integrate.taylor._tay_normal`),
+    polynomial (regula falsi; for F_z on its series,
+    :func:`rollingdisk.integrate.taylor._tay_normal`),
     so a guard ends the run where it fires, not at the end of a step.  The energy is taken
     at every step's start (sin and cos theta come with the jet) and at the end.
     """

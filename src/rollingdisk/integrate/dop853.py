@@ -1,7 +1,8 @@
 """The DOP853 integrator of :func:`rollingdisk.simulate`: one source, run two ways.
 
 Plain Python functions on numpy arrays and floats, importing neither numba nor
-``scipy.integrate``.  :mod:`rollingdisk.integrate.numba_core` compiles them with numba (as it compiles
+``scipy.integrate``.  :mod:`rollingdisk.integrate.numba_core` compiles them with numba (as it
+compiles
 the kernels of :mod:`rollingdisk.model.equations`, from their own source);
 :mod:`rollingdisk.integrate.pycore` runs the very same functions uncompiled, re-bound to a namespace
 whose ``np`` does scalar maths with :mod:`math` and whose few array loops (``_combine``,

@@ -3,8 +3,10 @@
 :func:`run_compiled` runs the DOP853 of :mod:`rollingdisk.integrate.dop853` in chunks of about
 ``_CHUNK_SECONDS`` of wall time (the integrator pauses without changing its steps), so that
 ``progress`` is called, the step budget is kept and ``KeyboardInterrupt`` or ``Terminated``
-(SIGTERM) surfaces between chunks.  Each chunk runs compiled (:mod:`rollingdisk.integrate.numba_core`)
-or uncompiled (:mod:`rollingdisk.integrate.pycore`), as :mod:`rollingdisk.integrate.jit` decides: a run starts
+(SIGTERM) surfaces between chunks.  Each chunk runs compiled
+(:mod:`rollingdisk.integrate.numba_core`)
+or uncompiled (:mod:`rollingdisk.integrate.pycore`), as :mod:`rollingdisk.integrate.jit` decides: a
+run starts
 uncompiled unless the compiled code is already loaded, and switches between chunks.
 :func:`run_scipy` steps scipy's own
 ``DOP853`` one step at a time and does the same in Python.  Both sample the guards of

@@ -1,10 +1,11 @@
-"""Nonlinear simulation of the disk, stopped at the guard events of :mod:`rollingdisk.integrate.events`.
+"""Nonlinear simulation of the disk, stopped at the guard events (:mod:`.events`).
 
 The equations of motion of :mod:`rollingdisk.model.equations` (eqs. 1, 2, 37, 38 on rough ground;
 2, 8, 49 on smooth ground) are integrated from any initial state by :func:`simulate`, or from
 a perturbed steady motion by :func:`simulate_steady`.  Two drivers take the same steps:
 ``method="dop853"`` (default), rollingdisk's Dormand-Prince 8(5,3) with scipy's step size
-control (:mod:`rollingdisk.integrate.dop853`; uncompiled while a run is short, compiled by numba once
+control (:mod:`rollingdisk.integrate.dop853`; uncompiled while a run is short, compiled by numba
+once
 it is long enough to be worth loading, see :mod:`rollingdisk.integrate.jit`), run in chunks of at
 most about 0.05 s so that progress is reported and Ctrl-C (``KeyboardInterrupt``) or SIGTERM
 (:class:`rollingdisk.util.files.Terminated`) surfaces between chunks; and ``method="scipy"``,

@@ -42,8 +42,10 @@ def _geometry(h, theta):
     """``h~, sin, cos, tan, y_P, z_P`` at inclination ``theta`` (eq. 4, a = 1).
 
     This is the library's one definition of ``h~ = h sgn(theta)`` (which rim edge touches
-    the plane); every other place takes ``h~`` from here (:func:`rollingdisk.model.geometry.h_tilde`,
-    the maps of :mod:`rollingdisk.theory.steady` and :mod:`rollingdisk.theory.oscillations`).  Convention:
+    the plane); every other place takes ``h~`` from here
+    (:func:`rollingdisk.model.geometry.h_tilde`,
+    the maps of :mod:`rollingdisk.theory.steady` and :mod:`rollingdisk.theory.oscillations`).
+    Convention:
     ``theta = 0`` counts as the limit ``theta -> 0+``, so ``h~ = +h`` there (and ``-0.0``
     too).  For ``h = 0`` nothing depends on it; for ``h > 0``, ``theta = 0`` (the disk on
     the line of its rim edge) is outside the theory, and a simulation stops there (the

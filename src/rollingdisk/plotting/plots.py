@@ -1,7 +1,8 @@
 """Plots: existence and stability maps of steady motions (sections 3-4) and trajectories.
 
 This module sits outside the numeric core: it calls :mod:`rollingdisk.theory.steady`,
-:mod:`rollingdisk.theory.oscillations` and :mod:`rollingdisk.model.equations` and draws what they return.
+:mod:`rollingdisk.theory.oscillations` and :mod:`rollingdisk.model.equations` and draws what they
+return.
 It never re-implements a formula of the paper, and what a map shows (which steady
 motions exist, which are stable) is computed in :mod:`rollingdisk.theory.regions`.  matplotlib is
 imported only when a plot function is called; every function takes ``ax=None`` (a new

@@ -298,7 +298,8 @@ def _check_method(method) -> str:
 
 def _kernel(method, rough, h, x0, theta_ref, a0, t_end, rtol, atol, max_steps):
     """Summaries (n, NCOL) of the trajectories from the rows of ``x0`` by ``method``: the
-    batch Taylor kernel (order from min(rtol, atol), :func:`rollingdisk.integrate.taylor.taylor_order`)
+    batch Taylor kernel (order from min(rtol, atol),
+    :func:`rollingdisk.integrate.taylor.taylor_order`)
     or the batch DOP853 kernel of :mod:`rollingdisk.integrate.batch`."""
     from rollingdisk.integrate import batch as core
     from rollingdisk.integrate.taylor import taylor_order

@@ -2,7 +2,8 @@
 
 The maps of the paper's Figures 4-8 and of the atlas are drawn by
 :mod:`rollingdisk.plotting.plots`; what they show is computed here, in the numeric core, from
-:mod:`rollingdisk.theory.steady` (eq. 31) and :mod:`rollingdisk.theory.oscillations` (eqs. 45, 47, 55):
+:mod:`rollingdisk.theory.steady` (eq. 31) and :mod:`rollingdisk.theory.oscillations` (eqs. 45, 47,
+55):
 
 * :func:`existence_codes`: for the rough steady circle of given ``(theta0, r_C)``, is there
   one (``Omega0^2 > 0``) and is it stable (``varpi^2 > 0``)?  Class codes
