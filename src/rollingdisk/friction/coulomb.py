@@ -10,7 +10,7 @@ import numpy as np
 
 from rollingdisk.friction.ground import Coulomb
 from rollingdisk.model.disk import Disk
-from rollingdisk.model.geometry import _geometry
+from rollingdisk.model.geometry import _geometry, _inertia
 from rollingdisk.model.state import SMOOTH_STATE, _as_state
 from rollingdisk.util.errors import ParameterError
 
@@ -72,7 +72,7 @@ def _rolling_solve(h, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z):
     """Rolling (no slip) with a contact moment ``M = M0 + F_z M1``: eqs. (8), (9), (11) with
     the constraint (37).  Returns ``(dw1, dw2, dw3, F_x, F_y, F_z)`` (forces in Cxyz)."""
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
-    k1 = 0.25 + h * h / 3.0  # eq. (10)
+    k1 = _inertia(h)[0]  # eq. (10)
     k2 = 0.5
     Om = w3 / c  # eq. (2)
     v_Cx = w2 - ht * w3  # eq. (37)
@@ -105,7 +105,7 @@ def _sliding_solve(h, mu, e_x, e_y, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, 
     moment ``M = M0 + F_z M1``: (9) with ``F_z`` from (11), solved jointly with
     ``d omega1/dt``.  Returns ``(dw1, dw2, dw3, F_x, F_y, F_z)`` (forces in Cxyz)."""
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
-    k1 = 0.25 + h * h / 3.0  # eq. (10)
+    k1 = _inertia(h)[0]  # eq. (10)
     k2 = 0.5
     G1 = (k2 * w2 - k1 * w3 * p) * w3
     G3 = (-k2 * w2 + k1 * w3 * p) * w1
@@ -192,7 +192,7 @@ def _coulomb_energy(h, y):
     """Energy (eq. 13) at a Coulomb state: ``V_X, V_Y`` from the state, ``v_Cz`` from (7)."""
     V_X, V_Y, theta, w1, w2, w3 = y[2], y[3], y[5], y[7], y[8], y[9]
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
-    k1 = 0.25 + h * h / 3.0
+    k1 = _inertia(h)[0]  # eq. (10)
     v_Cz = -w1 * y_P
     return (0.5 * (V_X * V_X + V_Y * V_Y + v_Cz * v_Cz) + 0.5 * k1 * (w1 * w1 + w3 * w3)
             + 0.25 * w2 * w2 - z_P)

@@ -48,7 +48,7 @@ import numpy as np
 
 from rollingdisk.friction import coulomb as _cl
 from rollingdisk.model.disk import Disk
-from rollingdisk.model.geometry import _geometry
+from rollingdisk.model.geometry import _geometry, _inertia
 from rollingdisk.model.outcomes import AT_REST, EDGE_CONTACT, FELL_FLAT, LIFT_OFF, names
 from rollingdisk.util.checks import check_int, check_real
 from rollingdisk.util.errors import ParameterError
@@ -392,7 +392,7 @@ def _family(h, alpha):
     Om = np.sqrt(Om2)
     w3 = Om * c
     w2 = h * w3
-    k1 = 0.25 + h * h / 3.0  # eq. (10)
+    k1 = _inertia(h)[0]  # eq. (10)
     E = 0.5 * k1 * w3 * w3 + 0.25 * w2 * w2 + c + h * s  # -z_P = c + h s
     return E, Om, abs(w2 * c - w3 * s), w3, s - h * c
 

@@ -27,8 +27,8 @@ from rollingdisk.model import equations as _eq
 _ns = {**_eq.__dict__, **_src.__dict__, **_tay.__dict__}
 
 #: The kernels of equations.py, then the integrator of _dop853.py, every one compiled.
-_KERNELS = ("_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs", "_smooth_rhs",
-            "_reduced_state", "_reduced_rhs", "_normal_force", "_side_normal_force")
+_KERNELS = ("_inertia", "_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs",
+            "_smooth_rhs", "_reduced_state", "_reduced_rhs", "_normal_force", "_side_normal_force")
 _INTEGRATOR = ("_rhs", "_rhs_col", "_guards", "_combine", "_step", "_dense_tail",
                "_dense_coefficients", "_dense_value", "_error_norm", "_error_norm_v",
                "_step_factor", "_rms", "initial_step",

@@ -33,6 +33,7 @@ import math
 
 import numpy as np
 
+from rollingdisk.model.geometry import _inertia
 from rollingdisk.model.outcomes import (
     COMPLETED,
     EDGE_CONTACT,
@@ -139,7 +140,7 @@ def _tay_rows_smooth(h, th, w1, w2, w3, A, P):
     ``d2 = 0``, ``d3 = (-k2 w2 + k1 w3 p) w1 / k1``.
     """
     ht = h if th[0] >= 0.0 else -h
-    k1 = 0.25 + h * h / 3.0  # eq. (10)
+    k1 = _inertia(h)[0]  # eq. (10)
     k2 = 0.5
     S, C, T, PW3, YP, ZP = A[0], A[1], A[2], A[3], A[4], A[5]
     YZ, W11, YY, G, D1 = A[6], A[7], A[8], A[9], A[10]

@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from rollingdisk.model.geometry import h_tilde
+from rollingdisk.model.geometry import _inertia, h_tilde
 from rollingdisk.util.checks import check_real
 from rollingdisk.util.errors import ParameterError
 
@@ -105,12 +105,12 @@ class Disk:
     @property
     def k1_sq(self) -> float:
         """Squared radius of gyration about a diameter, ``1/4 + h^2/3`` (eq. 10)."""
-        return 0.25 + self.h * self.h / 3.0
+        return _inertia(self.h)[0]
 
     @property
     def k2_sq(self) -> float:
         """Squared radius of gyration about the symmetry axis, ``1/2`` (eq. 10)."""
-        return 0.5
+        return _inertia(self.h)[1]
 
     # -- contact geometry, eq. (4) -----------------------------------------------------
     def h_tilde(self, theta: float) -> float:

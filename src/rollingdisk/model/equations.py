@@ -36,7 +36,7 @@ from collections.abc import Callable
 import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground
-from rollingdisk.model.geometry import _geometry
+from rollingdisk.model.geometry import _geometry, _inertia
 from rollingdisk.model.state import _as_state, _reduced_state, _shape_error, state_names
 from rollingdisk.util.errors import ParameterTypeError
 
@@ -60,7 +60,7 @@ def _rough_omega_dot(h, theta, w1, w2, w3):
 def _smooth_omega_dot(h, theta, w1, w2, w3):
     """Angular accelerations on smooth ground, eq. (49) (confirmed by the derivation)."""
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
-    k1 = 0.25 + h * h / 3.0  # eq. (10)
+    k1 = _inertia(h)[0]  # eq. (10)
     k2 = 0.5
     d1 = ((k2 * w2 - k1 * w3 * p) * w3 + y_P + y_P * z_P * w1 * w1) / (k1 + y_P * y_P)
     d2 = 0.0 * w1

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["h_tilde"]
+__all__ = ["h_tilde", "inertia"]
 
 
 
@@ -38,6 +38,27 @@ def h_tilde(h, theta):
 # ---------------------------------------------------------------------------------------
 # kernels: plain arithmetic, numba-compilable, element-wise on arrays
 # ---------------------------------------------------------------------------------------
+def _inertia(h):
+    """``(k1^2, k2^2)``: the squared radii of gyration of the disk about a diameter through C
+    and about its axis, in units of ``a^2`` (eq. 10): ``k1^2 = 1/4 + h^2/3``, ``k2^2 = 1/2``.
+
+    The library's one place for eq. (10): every kernel, map and property takes it from here.
+    Element-wise on arrays; numba-compilable.
+    """
+    return 0.25 + h * h / 3.0, 0.5
+
+
+def inertia(h):
+    """``(k1^2, k2^2)`` of a disk of half-thickness ``h`` (eq. 10; units of ``a^2``).
+
+    Examples
+    --------
+    >>> inertia(0.0)
+    (0.25, 0.5)
+    """
+    return _inertia(h)
+
+
 def _geometry(h, theta):
     """``h~, sin, cos, tan, y_P, z_P`` at inclination ``theta`` (eq. 4, a = 1).
 

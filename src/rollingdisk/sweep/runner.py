@@ -52,6 +52,7 @@ from pathlib import Path
 import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground, check_h
+from rollingdisk.model.geometry import _inertia
 from rollingdisk.util.checks import check_real
 from rollingdisk.util.errors import ParameterError
 
@@ -304,7 +305,7 @@ def _kernel(method, rough, h, x0, theta_ref, a0, t_end, rtol, atol, max_steps):
     from rollingdisk.integrate import batch as core
     from rollingdisk.integrate.taylor import taylor_order
 
-    k1 = 0.25 + h ** 2 / 3.0  # eq. (10), as Disk.k1_sq
+    k1 = _inertia(h)[0]  # eq. (10)
     k2 = np.full(k1.shape, 0.5)
     args = (rough, h, k1, k2, np.ascontiguousarray(x0), theta_ref, a0, GROW_LO, GROW_HI,
             t_end, rtol, atol, max_steps)

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground, check_h
-from rollingdisk.model.geometry import h_tilde
+from rollingdisk.model.geometry import _inertia, h_tilde
 from rollingdisk.util.checks import check_real
 from rollingdisk.util.errors import ParameterError
 
@@ -220,7 +220,7 @@ def _omega20(ground: str, h, ht, s, c, omega30):
     if ground == "rough":
         return (((3.0 + 16.0 * h * h) * p + 12.0 * ht) * omega30 * omega30 - 12.0 * y_P) / (
             6.0 * (3.0 + 2.0 * ht * p) * omega30)
-    k1, k2 = 0.25 + h * h / 3.0, 0.5  # eq. (10), as Disk.k1_sq, Disk.k2_sq
+    k1, k2 = _inertia(h)  # eq. (10)
     return (k1 * p * omega30 * omega30 - y_P) / (k2 * omega30)  # eq. (34)
 
 
