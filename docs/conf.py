@@ -18,8 +18,9 @@ sys.path.insert(0, str(ROOT / "src"))
 sys.path.insert(0, str(HERE))
 os.environ.setdefault("MPLBACKEND", "Agg")
 
-import rollingdisk  # noqa: E402
 from _apigen import write_api_index  # noqa: E402
+
+import rollingdisk  # noqa: E402
 
 write_api_index(HERE / "api" / "index.rst")
 
@@ -96,9 +97,8 @@ def _constant_docstring(app, what, name, obj, options, lines):
     """
     if what != "data":
         return
-    from sphinx.pycode import ModuleAnalyzer
-
     from _apigen import _defining_module
+    from sphinx.pycode import ModuleAnalyzer
 
     modname, _, attr = name.rpartition(".")
     package = sys.modules.get(modname)

@@ -75,7 +75,8 @@ plt.show()
 root = brentq(lambda w: rd.varpi2_linearized(rd.straight_line(coin, "rough", w)), 0.2, 1.2,
               xtol=1e-13)
 assert abs(root - omega_line) < 1e-7, (root, omega_line)
-assert np.all(varpi2[omegas < 0.99 * omega_line] < 0) and np.all(varpi2[omegas > 1.01 * omega_line] > 0)
+assert np.all(varpi2[omegas < 0.99 * omega_line] < 0)
+assert np.all(varpi2[omegas > 1.01 * omega_line] > 0)
 assert abs(rd.thresholds(0.0).rough_straight_line_omega20_sq - 1.0 / 3.0) < 1e-15
 assert abs(coin.h - 2.33 / 23.25) < 1e-12
 assert abs(v_line - omega_line * math.sqrt(9.80665 * 23.25e-3 / 2)) < 1e-12
