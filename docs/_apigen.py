@@ -108,6 +108,36 @@ def api_entries() -> dict[str, list[str]]:
     return groups
 
 
+def filename_map(groups: dict[str, list[str]] | None = None) -> dict[str, str]:
+    """``autosummary_filename_map``: page names that differ from a name only in case.
+
+    ``rollingdisk.Thresholds`` and ``rollingdisk.thresholds`` would be ``Thresholds.html``
+    and ``thresholds.html``, one file on a case-insensitive file system (macOS, Windows).
+    The class keeps its name; the function's page gets ``-function`` appended.
+    """
+    if groups is None:
+        groups = api_entries()
+    names = [n for group in groups.values() for n in group]
+    by_lower: dict[str, list[str]] = {}
+    for n in names:
+        by_lower.setdefault(n.lower(), []).append(n)
+    out = {}
+    for same in by_lower.values():
+        if len(same) < 2:
+            continue
+        keep = next((n for n in same if n.rpartition(".")[2][:1].isupper()), same[0])
+        for n in same:
+            if n != keep:
+                out[n] = f"{n}-function"
+    return out
+
+
+def page_name(name: str, fmap: dict[str, str] | None = None) -> str:
+    """The generated page of a public dotted name, without ``.html``."""
+    fmap = filename_map() if fmap is None else fmap
+    return fmap.get(name, name)
+
+
 def render() -> str:
     groups = api_entries()
     lines = [

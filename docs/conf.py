@@ -18,7 +18,7 @@ sys.path.insert(0, str(ROOT / "src"))
 sys.path.insert(0, str(HERE))
 os.environ.setdefault("MPLBACKEND", "Agg")
 
-from _apigen import write_api_index  # noqa: E402
+from _apigen import filename_map, write_api_index  # noqa: E402
 
 import rollingdisk  # noqa: E402
 
@@ -52,6 +52,7 @@ myst_enable_extensions = ["dollarmath"]
 # -- autodoc / autosummary / numpydoc ------------------------------------------------------
 autosummary_generate = True
 autosummary_imported_members = False
+autosummary_filename_map = filename_map()  # Thresholds vs thresholds: one file on macOS
 autodoc_typehints = "none"  # numpydoc's Parameters sections carry the types
 autodoc_member_order = "bysource"
 numpydoc_show_class_members = False
