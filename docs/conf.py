@@ -47,7 +47,7 @@ suppress_warnings: list[str] = []
 
 # -- MyST: the Markdown pages (docs/*.md) -------------------------------------------------
 myst_heading_anchors = 3
-myst_enable_extensions = ["dollarmath"]
+myst_enable_extensions: list[str] = []
 
 # -- autodoc / autosummary / numpydoc ------------------------------------------------------
 autosummary_generate = True
@@ -65,7 +65,7 @@ sphinx_gallery_conf = {
     "examples_dirs": str(ROOT / "examples"),
     "gallery_dirs": str(HERE / "auto_examples"),
     "filename_pattern": r"/plot_",
-    "within_subsection_order": "FileNameSortKey",
+    "within_subsection_order": "_gallery.example_order",
     "abort_on_example_error": True,
     "only_warn_on_example_error": False,
     "download_all_examples": False,
