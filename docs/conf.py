@@ -80,11 +80,12 @@ sphinx_gallery_conf = {
 # -- HTML ------------------------------------------------------------------------------
 html_theme = "alabaster"
 html_title = f"rollingdisk {release}"
-html_static_path: list[str] = []
+html_static_path = ["_static"]
+html_css_files = ["custom.css"]
 html_theme_options = {
     "description": "A rigid disk of finite thickness on a horizontal plane",
     "fixed_sidebar": True,
-    "page_width": "1180px",
+    "page_width": "1240px",
     "sidebar_width": "220px",
 }
 
