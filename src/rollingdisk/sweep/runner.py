@@ -59,8 +59,13 @@ from rollingdisk.util.errors import ParameterError
 __all__ = ["SweepGrid", "Perturbation", "run_sweep", "basin_sweep", "open_sweep",
            "BOUND_FACTOR", "GROW_LO", "GROW_HI"]
 
+#: A run counts as bounded (``stable_simulated``) if ``max|theta - theta0|`` stays within
+#: ``BOUND_FACTOR`` times the initial departure ``a0``.
 BOUND_FACTOR = 20.0
+#: ``growth_rate`` is the log-slope of ``|theta - theta0|`` between the first times it
+#: exceeds ``GROW_LO * a0`` and ``GROW_HI * a0``.
 GROW_LO = 2.0
+#: Upper end of the growth-rate window (see :data:`GROW_LO`).
 GROW_HI = 10.0
 _SECOND = ("omega30", "r_C", "Omega0", "omega0")
 
