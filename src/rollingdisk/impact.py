@@ -303,7 +303,7 @@ def lowest_point(disk: rd.Disk, state, tol: float = 1e-12) -> LowestPoint:
         kind, side = "rim", (1 if sn >= 0.0 else -1)
         r = _r_xyz(h, theta, side, sig_c)
     point = s[0:3] + _rot_z(psi) @ r
-    return LowestPoint(_lowest_height(h, s[2], theta), kind, side, point, r)
+    return LowestPoint(float(_lowest_height(h, s[2], theta)), kind, side, point, r)
 
 
 def _inside_error(height) -> rd.ParameterError:
@@ -423,8 +423,8 @@ def contact_delassus(disk: rd.Disk, theta, side: int = 1, cos_sign: int = 1) -> 
     Examples
     --------
     >>> W = contact_delassus(rd.Disk(h=0.0), 0.0)
-    >>> [round(float(x), 12) for x in np.diag(W)]  # 1 + 1/k1^2, 1 + 1/k1^2, 1
-    [5.0, 5.0, 1.0]
+    >>> [round(float(x), 12) for x in np.diag(W)]  # 1 + 1/k2^2, 1 + 1/k1^2, 1
+    [3.0, 5.0, 1.0]
     """
     h = _check_disk(disk).h
     theta = rd.check_real("theta", theta)
