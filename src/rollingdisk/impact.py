@@ -381,7 +381,7 @@ def touchdown_time(disk: rd.Disk, state, *, inside_tol: float = 1e-12) -> float:
             t_lo = t + tau
             if H(t_lo) <= 0.0:
                 return t_lo
-            return brentq(H, t_lo, probe, xtol=4e-16 * probe, rtol=4.5e-16, maxiter=200)
+            return brentq(H, t_lo, probe, xtol=4e-16 * probe, rtol=8.9e-16, maxiter=200)
         t += tau
         Ht = H(t)
         if Ht <= 0.0:
@@ -492,7 +492,7 @@ def _solve_law(W, gamma, e_n, e_t, mu):
             continue
         if gs[i] == 0.0 or gs[i] * gs[i + 1] < 0.0:
             beta = betas[i] if gs[i] == 0.0 else brentq(g, betas[i], betas[i + 1],
-                                                        xtol=1e-16, rtol=4.5e-16)
+                                                        xtol=1e-16, rtol=8.9e-16)
             tv, den, LN, xiT = parts(beta)
             if tv @ xiT > 0.0 and LN > 0.0:
                 roots.append((beta, LN))
