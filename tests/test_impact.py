@@ -359,6 +359,7 @@ def test_impacts_never_create_energy_and_satisfy_the_law(seed, e, mu, h):
     lost = T0 - _kinetic(disk, res.post_state)
     assert lost >= -1e-13 * T0
     assert res.energy_lost == pytest.approx(lost, abs=1e-12 * T0)
+    assert res.law_residual <= 1e-14
     # the law itself: xi = gamma+ + e gamma-
     Lam = np.array([*res.impulse_tangential, res.impulse_normal])
     xi = res.contact_velocity_post + e * res.contact_velocity_pre

@@ -543,6 +543,9 @@ class ImpactResult:
         The sticking branch of the law (``xi = 0``) holds.
     mode : {"rolling", "sliding", "flight"}
         Suggested by the post-impact contact velocity.
+    law_residual : float
+        ``|Lam - prox_C(Lam - r xi)|`` relative to ``|Lam| + r |xi|``: how well the law
+        holds (about 1e-16; the tests demand 1e-14).
     """
 
     impulse_normal: float
@@ -553,6 +556,7 @@ class ImpactResult:
     energy_lost: float
     stick: bool
     mode: str
+    law_residual: float
 
     def __repr__(self) -> str:
         t = self.impulse_tangential
@@ -604,7 +608,9 @@ def _impact(h, s, r, e_n, e_t, mu, mode_tol):
         mode = "sliding"
     else:
         mode = "rolling"
-    return ImpactResult(float(Lam[2]), Lam[:2].copy(), post, gam, gam2, lost, stick, mode)
+    resid = _prox_residual(W, gam, Lam, e_n, e_t, mu)
+    return ImpactResult(float(Lam[2]), Lam[:2].copy(), post, gam, gam2, lost, stick, mode,
+                        resid)
 
 
 def impact(disk: rd.Disk, pre_state, contact, e: float, mu: float, *,
