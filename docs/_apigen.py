@@ -1,9 +1,9 @@
 """Write the API reference's index (``docs/api/index.rst``) from the public namespace.
 
 Every name of ``rollingdisk.__all__`` is listed under its public path (``rollingdisk.Disk``),
-plus the members of the public modules ``rollingdisk.exact``, ``rollingdisk.sweep``,
-``rollingdisk.euler_disk`` and ``rollingdisk.plotting``; autosummary then generates one page
-per name under ``docs/api/generated/``.  No private module path is written down: a name's
+plus the members of the public modules ``rollingdisk.theory.exact``, ``rollingdisk.sweep``,
+``rollingdisk.friction.euler_disk`` and ``rollingdisk.plotting``; autosummary then generates
+one page per name under ``docs/api/generated/``.  No private module path is written down: a name's
 topic is read from the module that defines it (its ``__module__``, or for a constant the
 module whose ``__all__`` holds it), so the index follows the package when modules move, and
 a name no rule places still gets its page, under "Other public names".
@@ -30,9 +30,9 @@ TOPICS = (
     ("friction", "Friction: real ground",
      "Coulomb friction with rolling and sliding, rolling resistance, pivoting friction, air "
      "drag; the hybrid simulation and its energy balance."),
-    ("exact", "Exact motions", "The integrable disk by quadrature: ``rollingdisk.exact``."),
+    ("exact", "Exact motions", "The integrable disk by quadrature: ``rollingdisk.theory.exact``."),
     ("sweep", "Sweeps", "Many runs as one dataset: ``rollingdisk.sweep``."),
-    ("euler_disk", "Euler's disk", "The toy run to its end: ``rollingdisk.euler_disk``."),
+    ("euler_disk", "Euler's disk", "The toy run to its end: ``rollingdisk.friction.euler_disk``."),
     ("plotting", "Plotting", "Maps and trajectory plots (matplotlib): "
                              "``rollingdisk.plotting``."),
     ("other", "Other public names", "Names no topic rule places (yet)."),
@@ -40,12 +40,12 @@ TOPICS = (
 
 #: Module path components (any level, the innermost first) -> topic.
 MODULE_TOPICS = {
-    "errors": "disk", "disk": "disk", "equations": "disk", "model": "disk",
-    "steady": "steady", "_stability": "steady", "stability": "steady", "regions": "steady",
-    "theory": "steady",
-    "trajectory": "simulation", "events": "simulation", "_simulate": "simulation",
-    "simulate": "simulation", "measure": "simulation", "integrate": "simulation",
-    "ground": "friction", "_hybrid": "friction", "hybrid": "friction", "friction": "friction",
+    "errors": "disk", "util": "disk", "disk": "disk", "equations": "disk", "model": "disk",
+    "steady": "steady", "regions": "steady",
+    "theory": "steady", "oscillations": "steady", "exact": "exact",
+    "trajectory": "simulation", "events": "simulation", "simulation": "simulation",
+    "jit": "simulation", "measure": "simulation", "integrate": "simulation",
+    "ground": "friction", "coulomb": "friction", "hybrid": "friction", "friction": "friction",
 }
 
 #: Names placed by their meaning rather than by the module that holds them.
@@ -55,8 +55,9 @@ NAME_TOPICS = {
     "mu_required_map": "friction",
 }
 
-#: Public modules documented member by member, under their own topic.
-MODULES = ("exact", "sweep", "euler_disk", "plotting")
+#: Public modules documented member by member, under their own topic (topic -> module).
+MODULES = {"exact": "theory.exact", "sweep": "sweep", "euler_disk": "friction.euler_disk",
+           "plotting": "plotting"}
 
 
 def _defining_module(package, name: str, obj) -> str:
@@ -102,9 +103,10 @@ def api_entries() -> dict[str, list[str]]:
     groups: dict[str, list[str]] = {key: [] for key, _, _ in TOPICS}
     for name in rollingdisk.__all__:
         groups[topic_of(rollingdisk, name)].append(f"rollingdisk.{name}")
-    for modname in MODULES:
+    for topic, modname in MODULES.items():
         module = importlib.import_module(f"rollingdisk.{modname}")
-        groups[modname].extend(f"rollingdisk.{modname}.{n}" for n in module_members(module))
+        groups[topic].extend(f"rollingdisk.{modname}.{n}" for n in module_members(module)
+                             if getattr(rollingdisk, n, None) is not getattr(module, n))
     return groups
 
 

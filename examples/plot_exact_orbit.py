@@ -4,7 +4,7 @@ An exact orbit and its rosette
 
 On both ideal grounds the disk is integrable: along a motion ``omega2``, ``omega3`` and
 ``omega1^2`` are functions of the tilt ``theta`` alone, so a motion of any amplitude follows
-by quadrature (:mod:`rollingdisk.exact`, ``docs/exact.md``): its turning points, its nutation
+by quadrature (:mod:`rollingdisk.theory.exact`, ``docs/exact.md``): its turning points, its nutation
 period, how far it precesses in one period (``delta_psi``) and the path of the contact point,
 a rosette.
 
@@ -24,7 +24,7 @@ import numpy as np
 
 import rollingdisk as rd
 from rollingdisk import plotting
-from rollingdisk.exact import backbone, exact_steady
+from rollingdisk.theory.exact import backbone, exact_steady
 
 disk = rd.Disk(h=0.17)
 m = rd.steady_motion(disk, "rough", theta0=math.radians(30), r_C=0.5)

@@ -85,6 +85,12 @@ from rollingdisk.plotting.plots import (
     plot_all_omega30_stable as plot_all_omega30_stable,
 )
 from rollingdisk.plotting.plots import (
+    plot_backbone as plot_backbone,
+)
+from rollingdisk.plotting.plots import (
+    plot_basin_map as plot_basin_map,
+)
+from rollingdisk.plotting.plots import (
     plot_contact_forces as plot_contact_forces,
 )
 from rollingdisk.plotting.plots import (
@@ -94,10 +100,22 @@ from rollingdisk.plotting.plots import (
     plot_euler_disk as plot_euler_disk,
 )
 from rollingdisk.plotting.plots import (
+    plot_exact as plot_exact,
+)
+from rollingdisk.plotting.plots import (
+    plot_exact_theta as plot_exact_theta,
+)
+from rollingdisk.plotting.plots import (
     plot_existence_map as plot_existence_map,
 )
 from rollingdisk.plotting.plots import (
+    plot_nonlinear_map as plot_nonlinear_map,
+)
+from rollingdisk.plotting.plots import (
     plot_paths as plot_paths,
+)
+from rollingdisk.plotting.plots import (
+    plot_rosette as plot_rosette,
 )
 from rollingdisk.plotting.plots import (
     plot_stability_map as plot_stability_map,
@@ -141,6 +159,12 @@ __all__ = [
     "plot_trajectory",
     "trajectory_series",
     "plot_euler_disk",
+    "plot_nonlinear_map",
+    "plot_basin_map",
+    "plot_exact_theta",
+    "plot_rosette",
+    "plot_backbone",
+    "plot_exact",
     "FIGURE_HS",
     "SCALE_MAX",
     "figure4",

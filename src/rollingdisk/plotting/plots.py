@@ -58,6 +58,12 @@ __all__ = [
     "plot_trajectory",
     "trajectory_series",
     "plot_euler_disk",
+    "plot_nonlinear_map",
+    "plot_basin_map",
+    "plot_exact_theta",
+    "plot_rosette",
+    "plot_backbone",
+    "plot_exact",
 ]
 
 #: Colours of the classes, as in the paper's Figure 4: dark, gray, white.

@@ -1,4 +1,4 @@
-"""Free flight, touchdown and the impact law of a disk of finite thickness (issue 20).
+"""Free flight, touchdown and the impact law of a disk of finite thickness.
 
 Pure functions on a free body (no contact); derived in :mod:`rollingdisk.symbolic.impact`
 and explained in ``docs/impacts.md``.  Dimensionless units m = a = g = 1 (see
@@ -29,7 +29,10 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-import rollingdisk as rd
+from rollingdisk.model.disk import Disk, check_ground
+from rollingdisk.model.state import state_index, state_names
+from rollingdisk.util.checks import check_real
+from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["FREE_STATE", "CONTACT_KINDS", "IMPACT_MODES", "LowestPoint", "ImpactResult",
            "free_flight", "free_energy", "angular_momentum", "lowest_point", "touchdown_time",
@@ -51,9 +54,9 @@ H_ROCK_MAX = math.sqrt(15.0 / 8.0)
 
 
 # ---------------------------------------------------------------------------- helpers
-def _check_disk(disk) -> rd.Disk:
-    if not isinstance(disk, rd.Disk):
-        raise rd.ParameterTypeError(f"disk must be a rollingdisk.Disk, got "
+def _check_disk(disk) -> Disk:
+    if not isinstance(disk, Disk):
+        raise ParameterTypeError(f"disk must be a rollingdisk.Disk, got "
                                     f"{type(disk).__name__} {disk!r}")
     return disk
 
@@ -62,13 +65,13 @@ def _as_free_state(state, name: str = "state") -> np.ndarray:
     try:
         s = np.asarray(state, dtype=float)
     except (TypeError, ValueError):
-        raise rd.ParameterTypeError(f"{name} must be an array of 12 real numbers "
+        raise ParameterTypeError(f"{name} must be an array of 12 real numbers "
                                     f"({', '.join(FREE_STATE)}), got {state!r}") from None
     if s.shape != (12,):
-        raise rd.ParameterError(f"{name} must have 12 components ({', '.join(FREE_STATE)}), "
+        raise ParameterError(f"{name} must have 12 components ({', '.join(FREE_STATE)}), "
                                 f"got shape {s.shape}")
     if not np.all(np.isfinite(s)):
-        raise rd.ParameterError(f"{name} must be finite (no NaN or infinity)")
+        raise ParameterError(f"{name} must be finite (no NaN or infinity)")
     return s
 
 
@@ -157,7 +160,7 @@ def _flight_one(h, s, t):
     return np.concatenate([X, [psi, theta, phi], V, w])
 
 
-def free_flight(disk: rd.Disk, state, t):
+def free_flight(disk: Disk, state, t):
     """Exact free flight: ballistic centre, torque-free symmetric top.
 
     Parameters
@@ -183,7 +186,7 @@ def free_flight(disk: rd.Disk, state, t):
 
     Examples
     --------
-    >>> s = free_flight(rd.Disk(h=0.1), [0, 0, 2, 0, 0.3, 0, 1, 0, 0, 0.5, 3, 0], 0.5)
+    >>> s = free_flight(Disk(h=0.1), [0, 0, 2, 0, 0.3, 0, 1, 0, 0, 0.5, 3, 0], 0.5)
     >>> round(float(s[2]), 6)  # Z_C = 2 - 0.5^2/2
     1.875
     """
@@ -191,13 +194,13 @@ def free_flight(disk: rd.Disk, state, t):
     s = _as_free_state(state)
     ts = np.asarray(t, dtype=float)
     if not np.all(np.isfinite(ts)):
-        raise rd.ParameterError("t must be finite")
+        raise ParameterError("t must be finite")
     if ts.ndim == 0:
         return _flight_one(h, s, float(ts))
     return np.stack([_flight_one(h, s, float(x)) for x in ts.ravel()], axis=1)
 
 
-def free_energy(disk: rd.Disk, state) -> float:
+def free_energy(disk: Disk, state) -> float:
     """Total energy of a free body, units ``m g a``: ``|V|^2/2 + omega.J omega/2 + Z_C``."""
     h = _check_disk(disk).h
     s = _as_free_state(state)
@@ -207,7 +210,7 @@ def free_energy(disk: rd.Disk, state) -> float:
                  + s[2])
 
 
-def angular_momentum(disk: rd.Disk, state, about=None) -> np.ndarray:
+def angular_momentum(disk: Disk, state, about=None) -> np.ndarray:
     """Angular momentum in OXYZ about C (default) or about the fixed point ``about``."""
     h = _check_disk(disk).h
     s = _as_free_state(state)
@@ -216,7 +219,7 @@ def angular_momentum(disk: rd.Disk, state, about=None) -> np.ndarray:
         return L
     o = np.asarray(about, dtype=float)
     if o.shape != (3,) or not np.all(np.isfinite(o)):
-        raise rd.ParameterError(f"about must be a finite point (X, Y, Z), got {about!r}")
+        raise ParameterError(f"about must be a finite point (X, Y, Z), got {about!r}")
     return L + np.cross(s[0:3] - o, s[6:9])
 
 
@@ -263,7 +266,7 @@ def _r_xyz(h, theta, side, sig_c):
     return np.array([0.0, -side * h * c + sig_c * s, -side * h * s - sig_c * c])
 
 
-def lowest_point(disk: rd.Disk, state, tol: float = 1e-12) -> LowestPoint:
+def lowest_point(disk: Disk, state, tol: float = 1e-12) -> LowestPoint:
     """The lowest point of the disk and what touches there.
 
     Parameters
@@ -283,13 +286,13 @@ def lowest_point(disk: rd.Disk, state, tol: float = 1e-12) -> LowestPoint:
 
     Examples
     --------
-    >>> lp = lowest_point(rd.Disk(h=0.2), [0, 0, 1.5, 0, 0.0, 0, 0, 0, 0, 0, 0, 0])
+    >>> lp = lowest_point(Disk(h=0.2), [0, 0, 1.5, 0, 0.0, 0, 0, 0, 0, 0, 0, 0])
     >>> lp.kind, round(lp.height, 12)
     ('tread', 0.5)
     """
     h = _check_disk(disk).h
     s = _as_free_state(state)
-    tol = rd.check_real("tol", tol, low=0.0, high=0.1)
+    tol = check_real("tol", tol, low=0.0, high=0.1)
     psi, theta = s[3], s[4]
     sn, cs = math.sin(theta), math.cos(theta)
     sig_c = 1.0 if cs >= 0.0 else -1.0
@@ -306,13 +309,13 @@ def lowest_point(disk: rd.Disk, state, tol: float = 1e-12) -> LowestPoint:
     return LowestPoint(float(_lowest_height(h, s[2], theta)), kind, side, point, r)
 
 
-def _inside_error(height) -> rd.ParameterError:
-    return rd.ParameterError(f"state: the disk is inside the plane (lowest point at "
+def _inside_error(height) -> ParameterError:
+    return ParameterError(f"state: the disk is inside the plane (lowest point at "
                              f"Z = {height:.3g} < 0); a launch state needs Z_C >= "
                              f"|cos theta| + h |sin theta|")
 
 
-def touchdown_time(disk: rd.Disk, state, *, inside_tol: float = 1e-12) -> float:
+def touchdown_time(disk: Disk, state, *, inside_tol: float = 1e-12) -> float:
     """First time ``t >= 0`` at which the freely flying disk touches the plane.
 
     Parameters
@@ -344,7 +347,7 @@ def touchdown_time(disk: rd.Disk, state, *, inside_tol: float = 1e-12) -> float:
     """
     h = _check_disk(disk).h
     s = _as_free_state(state)
-    inside_tol = rd.check_real("inside_tol", inside_tol, low=0.0, high=1e-3)
+    inside_tol = check_real("inside_tol", inside_tol, low=0.0, high=1e-3)
     L, Om_p, _nu, Q0 = _flight_constants(h, s)
     eta0 = Q0[:, 1]
     nL = float(np.linalg.norm(L))
@@ -400,7 +403,7 @@ def _jacobian_parts(h, theta, r):
     return Jinv, Rx
 
 
-def contact_delassus(disk: rd.Disk, theta, side: int = 1, cos_sign: int = 1) -> np.ndarray:
+def contact_delassus(disk: Disk, theta, side: int = 1, cos_sign: int = 1) -> np.ndarray:
     """Delassus matrix ``W = (1/m) I + [r]^T J^-1 [r]`` of a rim contact point, in Cxyz.
 
     Parameters
@@ -422,16 +425,16 @@ def contact_delassus(disk: rd.Disk, theta, side: int = 1, cos_sign: int = 1) -> 
 
     Examples
     --------
-    >>> W = contact_delassus(rd.Disk(h=0.0), 0.0)
+    >>> W = contact_delassus(Disk(h=0.0), 0.0)
     >>> [round(float(x), 12) for x in np.diag(W)]  # 1 + 1/k2^2, 1 + 1/k1^2, 1
     [3.0, 5.0, 1.0]
     """
     h = _check_disk(disk).h
-    theta = rd.check_real("theta", theta)
+    theta = check_real("theta", theta)
     if side not in (1, -1) or isinstance(side, bool):
-        raise rd.ParameterError(f"side must be +1 or -1, got {side!r}")
+        raise ParameterError(f"side must be +1 or -1, got {side!r}")
     if cos_sign not in (1, -1) or isinstance(cos_sign, bool):
-        raise rd.ParameterError(f"cos_sign must be +1 or -1, got {cos_sign!r}")
+        raise ParameterError(f"cos_sign must be +1 or -1, got {cos_sign!r}")
     r = _r_xyz(h, theta, side, float(cos_sign))
     Jinv, Rx = _jacobian_parts(h, theta, r)
     return np.eye(3) + Rx.T @ Jinv @ Rx
@@ -569,16 +572,16 @@ def _contact_of(h, s, contact):
     sig_c = 1.0 if math.cos(theta) >= 0.0 else -1.0
     if isinstance(contact, LowestPoint):
         if contact.kind == "face":
-            raise rd.ParameterError("contact: a face landing is a distributed impact, outside "
+            raise ParameterError("contact: a face landing is a distributed impact, outside "
                                     "the single-point law; give side=+1 or -1 of a rim edge")
         if contact.kind == "tread":
-            raise rd.ParameterError("contact: on the tread line give the rim edge that "
+            raise ParameterError("contact: on the tread line give the rim edge that "
                                     "strikes, contact=+1 or -1")
         side = contact.side
     elif contact in (1, -1) and not isinstance(contact, bool):
         side = int(contact)
     else:
-        raise rd.ParameterError(f"contact must be a LowestPoint or a rim edge +1 / -1, "
+        raise ParameterError(f"contact must be a LowestPoint or a rim edge +1 / -1, "
                                 f"got {contact!r}")
     return _r_xyz(h, theta, side, sig_c)
 
@@ -613,7 +616,7 @@ def _impact(h, s, r, e_n, e_t, mu, mode_tol):
                         resid)
 
 
-def impact(disk: rd.Disk, pre_state, contact, e: float, mu: float, *,
+def impact(disk: Disk, pre_state, contact, e: float, mu: float, *,
            mode_tol: float = 1e-9) -> ImpactResult:
     """Impact of the disk on the plane at one rim point: Newton-Coulomb law (Glocker).
 
@@ -651,15 +654,15 @@ def impact(disk: rd.Disk, pre_state, contact, e: float, mu: float, *,
     Examples
     --------
     >>> s = [0, 0, 1.0, 0, 0.0, 0, 0, 0, -1.0, 0, 0, 0]  # thin disk upright, falling
-    >>> res = impact(rd.Disk(h=0.0), s, +1, e=0.5, mu=0.3)
+    >>> res = impact(Disk(h=0.0), s, +1, e=0.5, mu=0.3)
     >>> res.mode, round(res.impulse_normal, 12), round(float(res.post_state[8]), 12)
     ('flight', 1.5, 0.5)
     """
     h = _check_disk(disk).h
     s = _as_free_state(pre_state, "pre_state")
-    e = rd.check_real("e", e, low=0.0, high=1.0)
-    mu = rd.check_real("mu", mu, low=0.0)
-    mode_tol = rd.check_real("mode_tol", mode_tol, low=0.0, high=1.0)
+    e = check_real("e", e, low=0.0, high=1.0)
+    mu = check_real("mu", mu, low=0.0)
+    mode_tol = check_real("mode_tol", mode_tol, low=0.0, high=1.0)
     r = _contact_of(h, s, contact)
     return _impact(h, s, r, e, e, mu, mode_tol)
 
@@ -693,12 +696,12 @@ def rim_change_ratio(h) -> float:
     >>> rim_change_ratio(0.0), round(rim_change_ratio(0.5), 12)
     (1.0, 0.684210526316)
     """
-    h = rd.check_real("h", h, low=0.0, high=H_ROCK_MAX)
+    h = check_real("h", h, low=0.0, high=H_ROCK_MAX)
     return (15.0 - 8.0 * h * h) / (15.0 + 16.0 * h * h)
 
 
 # ---------------------------------------------------------- rolling <-> free states
-def free_state_from_rolling(disk: rd.Disk, ground: str, y) -> np.ndarray:
+def free_state_from_rolling(disk: Disk, ground: str, y) -> np.ndarray:
     """The free-body state of a state of the library's rolling layouts.
 
     Parameters
@@ -715,20 +718,20 @@ def free_state_from_rolling(disk: rd.Disk, ground: str, y) -> np.ndarray:
         ``Z_C = -z_P`` (eq. 7), ``V_Z = -omega1 y_P`` (eq. 7).
     """
     disk = _check_disk(disk)
-    names = rd.state_names(ground)
+    names = state_names(ground)
     try:
         y = np.asarray(y, dtype=float)
     except (TypeError, ValueError):
-        raise rd.ParameterTypeError(f"y must be an array of real numbers, got {y!r}") from None
+        raise ParameterTypeError(f"y must be an array of real numbers, got {y!r}") from None
     if y.shape != (len(names),):
-        raise rd.ParameterError(f"y must have {len(names)} components on {ground} ground "
+        raise ParameterError(f"y must have {len(names)} components on {ground} ground "
                                 f"({', '.join(names)}), got shape {y.shape}")
     if not np.all(np.isfinite(y)):
-        raise rd.ParameterError("y must be finite (no NaN or infinity)")
-    g = {n: y[rd.state_index(ground, n)] for n in names}
+        raise ParameterError("y must be finite (no NaN or infinity)")
+    g = {n: y[state_index(ground, n)] for n in names}
     psi, theta = g["psi"], g["theta"]
     if not abs(theta) < math.pi / 2:
-        raise rd.ParameterError(f"y: theta must lie in (-pi/2, pi/2) on a rim edge, got "
+        raise ParameterError(f"y: theta must lie in (-pi/2, pi/2) on a rim edge, got "
                                 f"{theta!r}")
     w1, w2, w3 = g["omega1"], g["omega2"], g["omega3"]
     y_P, z_P = disk.contact_point(theta)  # eq. (4)
@@ -743,7 +746,7 @@ def free_state_from_rolling(disk: rd.Disk, ground: str, y) -> np.ndarray:
                      w1, w2, w3])
 
 
-def rolling_state_from_free(disk: rd.Disk, ground: str, state, atol: float = 1e-9
+def rolling_state_from_free(disk: Disk, ground: str, state, atol: float = 1e-9
                             ) -> np.ndarray:
     """The rolling-layout state of a free-body state that touches the plane.
 
@@ -764,27 +767,27 @@ def rolling_state_from_free(disk: rd.Disk, ground: str, state, atol: float = 1e-
         point leaves or enters the plane, or (rough) slips.
     """
     disk = _check_disk(disk)
-    rd.check_ground(ground)
+    check_ground(ground)
     s = _as_free_state(state)
-    atol = rd.check_real("atol", atol, low=0.0)
+    atol = check_real("atol", atol, low=0.0)
     h = disk.h
     psi, theta = s[3], s[4]
     if not abs(theta) < math.pi / 2:
-        raise rd.ParameterError(f"state: theta must lie in (-pi/2, pi/2), got {theta!r}")
+        raise ParameterError(f"state: theta must lie in (-pi/2, pi/2), got {theta!r}")
     H = _lowest_height(h, s[2], theta)
     if abs(H) > atol:
-        raise rd.ParameterError(f"state: the disk does not touch the plane (lowest point "
+        raise ParameterError(f"state: the disk does not touch the plane (lowest point "
                                 f"at Z = {H:.3g})")
     side = 1 if theta >= 0.0 else -1  # h~ = h sgn(theta), theta = 0 counts as 0+
     r = _r_xyz(h, theta, side, 1.0)
     V = _rot_z(psi).T @ s[6:9]
     gam = V + np.cross(_rot_x(theta) @ s[9:12], r)
     if abs(gam[2]) > atol * max(1.0, float(np.linalg.norm(V))):
-        raise rd.ParameterError(f"state: the contact point moves off the plane (normal "
+        raise ParameterError(f"state: the contact point moves off the plane (normal "
                                 f"velocity {gam[2]:.3g})")
     if ground == "rough":
         if math.hypot(gam[0], gam[1]) > atol * max(1.0, float(np.linalg.norm(V))):
-            raise rd.ParameterError(f"state: the contact point slips (|u| = "
+            raise ParameterError(f"state: the contact point slips (|u| = "
                                     f"{math.hypot(gam[0], gam[1]):.3g}); rough ground "
                                     f"needs rolling")
         return np.array([s[0], s[1], psi, theta, s[5], s[9], s[10], s[11]])
