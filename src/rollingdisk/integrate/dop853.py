@@ -1,30 +1,29 @@
 """The DOP853 integrator of :func:`rollingdisk.simulate`: one source, run two ways.
 
 Plain Python functions on numpy arrays and floats, importing neither numba nor
-``scipy.integrate``.  :mod:`rollingdisk.integrate.numba_core` compiles them with numba (as it
-compiles
-the kernels of :mod:`rollingdisk.model.equations`, from their own source);
-:mod:`rollingdisk.integrate.pycore` runs the very same functions uncompiled, re-bound to a namespace
-whose ``np`` does scalar maths with :mod:`math` and whose few array loops (``_combine``,
+``scipy.integrate``.  :mod:`rollingdisk.integrate.numba_core` compiles them with numba (as
+it compiles the kernels of :mod:`rollingdisk.model.equations`, from their own source);
+:mod:`rollingdisk.integrate.pycore` runs the very same functions uncompiled, re-bound to a
+namespace whose ``np`` does scalar maths with :mod:`math` and whose few array loops (``_combine``,
 ``_error_norm_v``, ``_dense_tail``, ``_dense_value``, ``_rms``, ``_rhs``) are numpy
 one-liners.  The step-size control, the guards, the pauses and the output are written once.
 
 The method is the explicit Runge-Kutta method of Dormand and Prince of order 8 with the
 5th/3rd order error estimator (DOP853, Hairer, Norsett & Wanner, *Solving ODE I*, sec.
-II.10), with scipy's coefficients and scipy's step-size control, so it takes the steps of
-``scipy.integrate.solve_ivp(method="DOP853")``.  Guard events (:mod:`rollingdisk.integrate.events`)
-are located on the 7th-degree dense output (scipy's ``DOP853.dense_output``, 3 extra
+II.10), with Hairer's coefficients and scipy's step-size control, so it takes the steps of
+``scipy.integrate.solve_ivp(method="DOP853")``.  Guard events
+(:mod:`rollingdisk.integrate.events`) are located on the 7th-degree dense output (3 extra
 right-hand sides) by the Illinois variant of regula falsi.  The error can be controlled on
 part of the state only: a per-component ``atol`` of ``inf`` leaves a component out of the
 error norm (it is still integrated through the same stages), which is how the quadratures
 ``X_C, Y_C, psi, phi`` ride along the reduced system ``(theta, omega1, omega2, omega3)``
 (``error_control="reduced"``).
 
-The coefficients are scipy's own: the file ``scipy/integrate/_ivp/dop853_coefficients.py``
-is loaded directly (:func:`_load_coefficients`), without executing ``scipy.integrate``'s
-``__init__`` (0.3 s), so both integrators use one table and nothing is transcribed.
+The coefficients are data of the library's own (:mod:`.dop853_coefficients`, Hairer's
+table, checked against the order conditions by the tests), so an upgrade of scipy cannot
+change them.
 
-Why one module of ~650 lines: every function here is compiled by numba into one
+Why one module: every function here is compiled by numba into one
 namespace (and run uncompiled in another), so the integrator, its dense output and its
 guard location stay in one source file that both can re-bind.
 """
@@ -33,6 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from rollingdisk.integrate import dop853_coefficients as _dop  # Hairer's DOP853 table
 from rollingdisk.integrate import events as _ev
 from rollingdisk.model.equations import (
     _normal_force,
@@ -42,53 +42,6 @@ from rollingdisk.model.equations import (
     _smooth_rhs,
 )
 from rollingdisk.model.state import _reduced_state
-
-_COEFF_MODULE = "scipy.integrate._ivp.dop853_coefficients"
-_COEFF_NAMES = ("N_STAGES", "N_STAGES_EXTENDED", "INTERPOLATOR_POWER", "A", "B", "C", "E3",
-                "E5", "D")
-
-
-def _load_coefficients():
-    """scipy's module of DOP853 coefficients, loaded from its file without importing
-    ``scipy.integrate`` (whose ``__init__`` costs 0.3 s); the ordinary import if the file is
-    not where scipy keeps it.  Raises ImportError with advice if scipy lacks it."""
-    import importlib.util
-    import os
-    import sys
-
-    mod = sys.modules.get(_COEFF_MODULE, False)
-    if mod is False:  # not imported yet: read scipy's file directly
-        try:
-            spec = importlib.util.find_spec("scipy")
-            path = os.path.join(spec.submodule_search_locations[0], "integrate", "_ivp",
-                                "dop853_coefficients.py")
-            fspec = importlib.util.spec_from_file_location("rollingdisk._dop853_coefficients",
-                                                           path)
-            mod = importlib.util.module_from_spec(fspec)
-            fspec.loader.exec_module(mod)
-            for name in _COEFF_NAMES:
-                getattr(mod, name)
-        except Exception:  # noqa: BLE001 - any failure: the ordinary import decides
-            mod = False
-    try:
-        if mod is False or mod is None:
-            import importlib
-
-            mod = importlib.import_module(_COEFF_MODULE)
-        for name in _COEFF_NAMES:
-            getattr(mod, name)
-    except (ImportError, AttributeError) as exc:
-        import scipy
-
-        raise ImportError(
-            "rollingdisk's DOP853 integrator takes its coefficients from scipy's private "
-            f"module {_COEFF_MODULE} (present in scipy 1.4 to at least 1.17), which scipy "
-            f"{scipy.__version__} does not provide as expected ({exc}); install a scipy "
-            "version that has it, or use simulate(method='scipy')") from exc
-    return mod
-
-
-_dop = _load_coefficients()
 
 # ------------------------------------------------------------------ DOP853 coefficients
 _NS = _dop.N_STAGES  # 12

@@ -64,11 +64,29 @@ def _call(fn, *args):
         mask(signal.SIG_SETMASK, old)
 
 
+class _Dop853Dense:
+    """The dense output of one DOP853 step (order 7, Hairer's ``contd8``): ``F`` holds the
+    interpolation coefficients of :func:`rollingdisk.integrate.dop853._dense_coefficients`;
+    the polynomial alternates factors ``x`` and ``1 - x``, ``x = (t - t_old) / h``."""
+
+    def __init__(self, t_old, t, y_old, F):
+        self.t_old, self.t, self.h, self.y_old, self.F = t_old, t, t - t_old, y_old, F
+
+    def __call__(self, t):
+        t = np.asarray(t, dtype=float)
+        x = (t - self.t_old) / self.h
+        y = np.zeros(x.shape + self.y_old.shape)
+        xs = x[..., None] if x.ndim else x
+        for i, f in enumerate(self.F[::-1]):
+            y += f
+            y *= xs if i % 2 == 0 else 1 - xs
+        return (y + self.y_old).T
+
+
 def _dense_solution(segments, t_end):
     from scipy.integrate import OdeSolution
-    from scipy.integrate._ivp.rk import Dop853DenseOutput
 
-    pieces = [Dop853DenseOutput(t, t + dt, y, F) for t, dt, y, F in segments]
+    pieces = [_Dop853Dense(t, t + dt, y, F) for t, dt, y, F in segments]
     if not pieces:
         return None
     ts = np.array([s[0] for s in segments] + [t_end])
