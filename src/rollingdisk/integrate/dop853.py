@@ -34,6 +34,12 @@ import numpy as np
 
 from rollingdisk.integrate import dop853_coefficients as _dop  # Hairer's DOP853 table
 from rollingdisk.integrate import events as _ev
+from rollingdisk.integrate.roots import (
+    ILLINOIS_MAXITER,
+    _illinois_converged,
+    _illinois_trial,
+    _illinois_update,
+)
 from rollingdisk.model.equations import (
     _normal_force,
     _reduced_rhs,
@@ -310,29 +316,17 @@ def _first_fired(g, use):
 
 
 def _guard_root(rough, h, y, F, side, k, xa, xb, ga, gb, ytmp, g):
-    """Illinois regula falsi on the interpolant for the root of guard k in (xa, xb], with
-    guard k positive (ga) at xa and not positive (gb) at xb.  Returns the last admissible
-    fraction of the step (within round-off of the root)."""
-    side_flag = 0
-    for _ in range(200):
-        if xb - xa <= 4e-16 * max(1.0, xb):
+    """Illinois regula falsi (:mod:`.roots`) on the interpolant for the root of guard k in
+    (xa, xb], with guard k positive (ga) at xa and not positive (gb) at xb.  Returns the last
+    admissible fraction of the step (within round-off of the root)."""
+    flag = 0
+    for _ in range(ILLINOIS_MAXITER):
+        if _illinois_converged(xa, xb):
             break
-        xc = (xa * gb - xb * ga) / (gb - ga)
-        if not (xa < xc < xb):
-            xc = 0.5 * (xa + xb)
+        xc = _illinois_trial(xa, xb, ga, gb)
         _dense_value(y, F, xc, ytmp)
         _side_guards(rough, h, ytmp, side, g)
-        gc = g[k]
-        if gc > 0.0:
-            xa, ga = xc, gc
-            if side_flag == -1:
-                gb *= 0.5
-            side_flag = -1
-        else:
-            xb, gb = xc, gc
-            if side_flag == 1:
-                ga *= 0.5
-            side_flag = 1
+        xa, xb, ga, gb, flag = _illinois_update(xa, xb, ga, gb, xc, g[k], flag)
     return xa
 
 

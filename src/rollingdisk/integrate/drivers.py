@@ -23,6 +23,12 @@ import numpy as np
 
 from rollingdisk.integrate import events as _ev
 from rollingdisk.integrate import jit as _jit
+from rollingdisk.integrate.roots import (
+    ILLINOIS_MAXITER,
+    _illinois_converged,
+    _illinois_trial,
+    _illinois_update,
+)
 from rollingdisk.model.equations import equations_of_motion
 from rollingdisk.model.state import state_index
 
@@ -259,26 +265,14 @@ class _Counter:
 
 def _root(fun, a, b, fa):
     """The admissible end of a bracket [a, b] of a root of fun (fun(a) = fa > 0 >= fun(b)),
-    shrunk to round-off by the Illinois variant of regula falsi."""
+    shrunk to round-off by the Illinois variant of regula falsi (:mod:`.roots`)."""
     fb = fun(b)
     flag = 0
-    for _ in range(200):
-        if b - a <= 4 * np.finfo(float).eps * max(abs(a), abs(b), 1.0):
+    for _ in range(ILLINOIS_MAXITER):
+        if _illinois_converged(a, b):
             break
-        c = (a * fb - b * fa) / (fb - fa)
-        if not a < c < b:
-            c = 0.5 * (a + b)
-        fc = fun(c)
-        if fc > 0:
-            a, fa = c, fc
-            if flag == -1:
-                fb *= 0.5
-            flag = -1
-        else:
-            b, fb = c, fc
-            if flag == 1:
-                fa *= 0.5
-            flag = 1
+        c = _illinois_trial(a, b, fa, fb)
+        a, b, fa, fb, flag = _illinois_update(a, b, fa, fb, c, fun(c), flag)
     return a
 
 

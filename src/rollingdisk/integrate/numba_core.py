@@ -29,14 +29,15 @@ _ns = {**_eq.__dict__, **_src.__dict__, **_tay.__dict__}
 #: The kernels of equations.py, then the integrator of _dop853.py, every one compiled.
 _KERNELS = ("_inertia", "_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs",
             "_smooth_rhs", "_reduced_state", "_reduced_rhs", "_normal_force", "_side_normal_force")
-_INTEGRATOR = ("_rhs", "_rhs_col", "_guards", "_combine", "_step", "_dense_tail",
+_INTEGRATOR = ("_illinois_converged", "_illinois_trial", "_illinois_update", "_rhs", "_rhs_col",
+               "_guards", "_combine", "_step", "_dense_tail",
                "_dense_coefficients", "_dense_value", "_error_norm", "_error_norm_v",
                "_step_factor", "_rms", "initial_step",
                "initial_step_v", "_initial_step_scaled", "_side_guards", "_first_fired",
                "_guard_root", "_locate_on_dense", "_needs_sampling", "_mid_guards", "_grow",
                "integrate")
 #: The Taylor integrator of _taylor.py (``simulate(method="taylor")``) and the reduced jets,
-#: sampler and root finder of the sweeps' batch Taylor kernel (:mod:`rollingdisk.integrate.batch`).
+#: sampler and root finder of the sweeps' batch Taylor kernel (:mod:`.batch`).
 _TAYLOR = ("_tay_jet_rough", "_tay_rows_rough", "_tay_rows_smooth",
            "_tay_quadratures_smooth", "_tay_jet", "_tay_jet4_rough", "_tay_jet4_smooth",
            "_tay_normal", "_tay_sample", "_tay_poly", "_tay_poly_root", "_tay_eval",

@@ -33,6 +33,12 @@ import math
 
 import numpy as np
 
+from rollingdisk.integrate.roots import (
+    ILLINOIS_MAXITER,
+    _illinois_converged,
+    _illinois_trial,
+    _illinois_update,
+)
 from rollingdisk.model.geometry import _inertia
 from rollingdisk.model.outcomes import (
     COMPLETED,
@@ -430,26 +436,15 @@ def _tay_poly(c, deg, x):
 
 def _tay_poly_root(c, deg, sg, off, xa, xb, fa, fb):
     """Root in (xa, xb] of ``f(x) = sg * poly(c)(x) - off`` with ``f(xa)``, ``f(xb)`` of
-    opposite signs (or ``f(xb) = 0``): Illinois regula falsi on the polynomial, to
-    round-off.  Returns the end of the final bracket on the side of ``xa``."""
-    side_flag = 0
-    for _ in range(100):
-        if xb - xa <= 4e-16 * max(1.0, xb):
+    opposite signs (or ``f(xb) = 0``): Illinois regula falsi (:mod:`.roots`) on the
+    polynomial, to round-off.  Returns the end of the final bracket on the side of ``xa``."""
+    flag = 0
+    for _ in range(ILLINOIS_MAXITER):
+        if _illinois_converged(xa, xb):
             break
-        xc = (xa * fb - xb * fa) / (fb - fa)
-        if not (xa < xc < xb):
-            xc = 0.5 * (xa + xb)
+        xc = _illinois_trial(xa, xb, fa, fb)
         fc = sg * _tay_poly(c, deg, xc) - off
-        if (fc > 0.0) == (fa > 0.0) and fc != 0.0:
-            xa, fa = xc, fc
-            if side_flag == -1:
-                fb *= 0.5
-            side_flag = -1
-        else:
-            xb, fb = xc, fc
-            if side_flag == 1:
-                fa *= 0.5
-            side_flag = 1
+        xa, xb, fa, fb, flag = _illinois_update(xa, xb, fa, fb, xc, fc, flag)
     return xa
 
 
@@ -503,29 +498,17 @@ def _tay_step_size(J, P, atolv, rtol):
 
 
 def _tay_locate(rough, h, J, P, side, kg, xa, xb, ga, gb, ytmp, g):
-    """Regula falsi (Illinois) on the step polynomial for the root of guard ``kg`` in
-    (xa, xb] (times from the step start), positive at xa, not positive at xb; returns the
-    last admissible time (within round-off of the root)."""
-    side_flag = 0
-    for _ in range(200):
-        if xb - xa <= 4e-16 * max(1.0, xb):
+    """Illinois regula falsi (:mod:`.roots`) on the step polynomial for the root of guard
+    ``kg`` in (xa, xb] (times from the step start), positive at xa, not positive at xb;
+    returns the last admissible time (within round-off of the root)."""
+    flag = 0
+    for _ in range(ILLINOIS_MAXITER):
+        if _illinois_converged(xa, xb):
             break
-        xc = (xa * gb - xb * ga) / (gb - ga)
-        if not (xa < xc < xb):
-            xc = 0.5 * (xa + xb)
+        xc = _illinois_trial(xa, xb, ga, gb)
         _tay_eval(J, P, xc, ytmp)
-        _side_guards(rough, h, ytmp, side, g)  # noqa: F821 - bound by _numba_core
-        gc = g[kg]
-        if gc > 0.0:
-            xa, ga = xc, gc
-            if side_flag == -1:
-                gb *= 0.5
-            side_flag = -1
-        else:
-            xb, gb = xc, gc
-            if side_flag == 1:
-                ga *= 0.5
-            side_flag = 1
+        _side_guards(rough, h, ytmp, side, g)  # noqa: F821 - bound by numba_core
+        xa, xb, ga, gb, flag = _illinois_update(xa, xb, ga, gb, xc, g[kg], flag)
     return xa
 
 
