@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from rollingdisk.friction.ground import Coulomb
+from rollingdisk.friction.ground import Coulomb, _coulomb_moments, _coulomb_powers
 from rollingdisk.model.disk import Disk
 from rollingdisk.model.geometry import _geometry, _inertia
 from rollingdisk.model.state import SMOOTH_STATE, _as_state
@@ -36,36 +36,6 @@ ROLLING, SLIDING = 0, 1
 
 #: Mode code -> name.
 MODE_NAMES = ("rolling", "sliding")
-
-
-def _coulomb_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3):
-    """``M0, M1`` (6 floats, Cxyz) of the dissipative moments, ``M = M0 + F_z M1``.
-
-    Rolling resistance ``-c F_z omega_h/|omega_h|``, pivot ``-c F_z sgn(omega_z) e_z``, air
-    ``-c omega3 e_zeta / cos^3(theta)`` (see :mod:`rollingdisk.friction.ground`).  Scalars only."""
-    s = np.sin(theta)
-    c = np.cos(theta)
-    wx = w1
-    wy = w2 * c - w3 * s
-    wz = w2 * s + w3 * c
-    n = np.sqrt(wx * wx + wy * wy)
-    kr = 0.0
-    if n > 0.0:
-        kr = -c_roll / n
-    ka = -c_air * w3 / (c * c * c)  # air: -c omega3 zeta / cos^3(theta), zeta = (0, -s, c)
-    M1z = -c_pivot * np.sign(wz)
-    return 0.0, -ka * s, ka * c, kr * wx, kr * wy, M1z
-
-
-def _coulomb_powers(c_roll, c_pivot, c_air, theta, w1, w2, w3, F_z):
-    """Power ``omega . M`` of each moment: ``(rolling resistance, pivot, air)``, each <= 0."""
-    s = np.sin(theta)
-    c = np.cos(theta)
-    wx = w1
-    wy = w2 * c - w3 * s
-    wz = w2 * s + w3 * c
-    wh2 = wx * wx + wy * wy
-    return -c_roll * F_z * np.sqrt(wh2), -c_pivot * F_z * np.abs(wz), -c_air * w3 * w3 / (c * c * c)
 
 
 def _rolling_solve(h, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z):

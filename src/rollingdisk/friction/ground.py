@@ -45,6 +45,57 @@ def angular_velocity_xyz(theta, omega1, omega2, omega3):
     return omega1, omega2 * c - omega3 * s, omega2 * s + omega3 * c
 
 
+# kernels of the moment models: scalars, numba-compilable; the classes below evaluate them
+def _coulomb_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3):
+    """``M0, M1`` (6 floats, Cxyz) of the dissipative moments, ``M = M0 + F_z M1``.
+
+    Rolling resistance ``-c F_z omega_h/|omega_h|``, pivot ``-c F_z sgn(omega_z) e_z``, air
+    ``-c omega3 e_zeta / cos^3(theta)`` (the classes below).  Scalars only."""
+    s = np.sin(theta)
+    c = np.cos(theta)
+    wx = w1
+    wy = w2 * c - w3 * s
+    wz = w2 * s + w3 * c
+    n = np.sqrt(wx * wx + wy * wy)
+    kr = 0.0
+    if n > 0.0:
+        kr = -c_roll / n
+    ka = -c_air * w3 / (c * c * c)  # air: -c omega3 zeta / cos^3(theta), zeta = (0, -s, c)
+    M1z = -c_pivot * np.sign(wz)
+    return 0.0, -ka * s, ka * c, kr * wx, kr * wy, M1z
+
+
+def _coulomb_powers(c_roll, c_pivot, c_air, theta, w1, w2, w3, F_z):
+    """Power ``omega . M`` of each moment: ``(rolling resistance, pivot, air)``, each <= 0."""
+    s = np.sin(theta)
+    c = np.cos(theta)
+    wx = w1
+    wy = w2 * c - w3 * s
+    wz = w2 * s + w3 * c
+    wh2 = wx * wx + wy * wy
+    return -c_roll * F_z * np.sqrt(wh2), -c_pivot * F_z * np.abs(wz), -c_air * w3 * w3 / (c * c * c)
+
+
+def _moment(c_roll, c_pivot, c_air, theta, omega1, omega2, omega3, F_z):
+    """``M = M0 + F_z M1`` of :func:`_coulomb_moments`, element-wise on arrays."""
+    def one(th, w1, w2, w3, fz):
+        m = _coulomb_moments(c_roll, c_pivot, c_air, th, w1, w2, w3)
+        return m[0] + fz * m[3], m[1] + fz * m[4], m[2] + fz * m[5]
+
+    out = np.vectorize(one, otypes=[float] * 3)(theta, omega1, omega2, omega3, F_z)
+    return tuple(np.asarray(a)[()] for a in out)
+
+
+def _power(which, c_roll, c_pivot, c_air, theta, omega1, omega2, omega3, F_z):
+    """Power ``omega . M`` of one moment (``which``: 0 rolling resistance, 1 pivot, 2 air)
+    of :func:`_coulomb_powers`, element-wise on arrays."""
+    def one(th, w1, w2, w3, fz):
+        return _coulomb_powers(c_roll, c_pivot, c_air, th, w1, w2, w3, fz)[which]
+
+    return np.asarray(np.vectorize(one, otypes=[float])(theta, omega1, omega2, omega3,
+                                                        F_z))[()]
+
+
 def _coefficient(name, value):
     return check_real(name, value, low=0.0)
 
@@ -71,15 +122,11 @@ class RollingResistance:
 
     def moment(self, theta, omega1, omega2, omega3, F_z):
         """``(M_x, M_y, M_z)`` in Cxyz, units of ``m g a``."""
-        wx, wy, wz = angular_velocity_xyz(theta, omega1, omega2, omega3)
-        n = np.hypot(wx, wy)
-        k = np.where(n > 0, -self.c * F_z / np.where(n > 0, n, 1.0), 0.0)
-        return (k * wx)[()], (k * wy)[()], (0.0 * k)[()]
+        return _moment(self.c, 0.0, 0.0, theta, omega1, omega2, omega3, F_z)
 
     def power(self, theta, omega1, omega2, omega3, F_z):
         """``omega . M = -c F_z |omega_h|`` (eq. 12), ``<= 0`` for ``F_z >= 0``."""
-        wx, wy, wz = angular_velocity_xyz(theta, omega1, omega2, omega3)
-        return -self.c * F_z * np.hypot(wx, wy)
+        return _power(0, self.c, 0.0, 0.0, theta, omega1, omega2, omega3, F_z)
 
 
 @dataclass(frozen=True)
@@ -103,14 +150,11 @@ class PivotFriction:
 
     def moment(self, theta, omega1, omega2, omega3, F_z):
         """``(M_x, M_y, M_z)`` in Cxyz, units of ``m g a``."""
-        wz = angular_velocity_xyz(theta, omega1, omega2, omega3)[2]
-        mz = -self.c * F_z * np.sign(wz)
-        return (0.0 * mz)[()], (0.0 * mz)[()], np.asarray(mz)[()]
+        return _moment(0.0, self.c, 0.0, theta, omega1, omega2, omega3, F_z)
 
     def power(self, theta, omega1, omega2, omega3, F_z):
         """``omega . M = -c F_z |omega_z|``, ``<= 0`` for ``F_z >= 0``."""
-        wz = angular_velocity_xyz(theta, omega1, omega2, omega3)[2]
-        return -self.c * F_z * np.abs(wz)
+        return _power(1, 0.0, self.c, 0.0, theta, omega1, omega2, omega3, F_z)
 
 
 @dataclass(frozen=True)
@@ -141,14 +185,11 @@ class AirDrag:
 
     def moment(self, theta, omega1, omega2, omega3, F_z=None):
         """``(M_x, M_y, M_z)`` in Cxyz, units of ``m g a``."""
-        c = np.cos(theta)
-        k = -self.c * omega3 / (c * c * c)
-        return np.asarray(0.0 * k)[()], np.asarray(-k * np.sin(theta))[()], np.asarray(k * c)[()]
+        return _moment(0.0, 0.0, self.c, theta, omega1, omega2, omega3, 0.0)
 
     def power(self, theta, omega1, omega2, omega3, F_z=None):
         """``omega . M = -c omega3^2 / cos^3(theta) <= 0``."""
-        c = np.cos(theta)
-        return -self.c * omega3 * omega3 / (c * c * c)
+        return _power(2, 0.0, 0.0, self.c, theta, omega1, omega2, omega3, 0.0)
 
 
 def _model(name, cls, value):

@@ -27,9 +27,8 @@ import numpy as np
 from rollingdisk.integrate.numba_core import (
     _A,
     _B,
-    _E3,
-    _E5,
     _NS,
+    _error_norm,
     _geometry,
     _guards,
     _reduced_rhs,
@@ -139,25 +138,6 @@ def _step4(rough, h, y, dt, K, ytmp, y_new):
 
 
 @numba.njit(cache=True)
-def _error4(y, y_new, K, dt, rtol, atol):
-    """:func:`rollingdisk.integrate.dop853._error_norm` for the layout of :func:`_step4`."""
-    e5 = 0.0
-    e3 = 0.0
-    for i in range(4):
-        a5 = 0.0
-        a3 = 0.0
-        for j in range(_NS + 1):
-            a5 += _E5[j] * K[i, j]
-            a3 += _E3[j] * K[i, j]
-        sc = atol + rtol * max(abs(y[i]), abs(y_new[i]))
-        e5 += (a5 / sc) ** 2
-        e3 += (a3 / sc) ** 2
-    if e5 == 0.0 and e3 == 0.0:
-        return 0.0
-    return abs(dt) * e5 / np.sqrt((e5 + 0.01 * e3) * 4)
-
-
-@numba.njit(cache=True)
 def _hermite_root(dt, d0, v0, d1, v1):
     """Root in [0, dt] of the cubic Hermite interpolant of d with d(0) = d0 < 0 <= d(dt) = d1
     and slopes v0, v1 (bisection on the bracket then Newton polish)."""
@@ -260,7 +240,7 @@ def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, ato
             if t + dt > t_end:
                 dt = t_end - t
             _step4(rough, h, y, dt, K, ytmp, y_new)
-            err = _error4(y, y_new, K, dt, rtol, atol)
+            err = _error_norm(y, y_new, K, dt, rtol, atol)
             h_abs = dt * _step_factor(err, rejected)
             if err < 1.0:
                 accepted = True

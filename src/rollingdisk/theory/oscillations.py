@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rollingdisk.model.disk import check_ground, check_h
-from rollingdisk.model.equations import _rough_omega_dot, _smooth_omega_dot
+from rollingdisk.model.equations import _reduced_rhs
 from rollingdisk.model.geometry import h_tilde
 from rollingdisk.theory.steady import Omega0_sq, SteadyMotion, _map_domain
 from rollingdisk.util.checks import check_real
@@ -176,13 +176,6 @@ def stability(motion: SteadyMotion) -> Stability:
 # ---------------------------------------------------------------------------------------
 # numerical linearization of the derived equations
 # ---------------------------------------------------------------------------------------
-def _reduced_rhs(ground, h, x):
-    theta, w1, w2, w3 = x
-    kernel = _rough_omega_dot if ground == "rough" else _smooth_omega_dot
-    d1, d2, d3 = kernel(h, theta, w1, w2, w3)
-    return np.array([w1, d1, d2, d3])
-
-
 def reduced_jacobian(h: float, ground: str, theta0: float, omega20: float,
                      omega30: float) -> np.ndarray:
     """Jacobian of the reduced system ``d/dt (theta, omega1, omega2, omega3)`` at a steady state.
@@ -223,7 +216,7 @@ def reduced_jacobian(h: float, ground: str, theta0: float, omega20: float,
     for j in (1, 2, 3):
         xc = x0.astype(complex)
         xc[j] += 1j * eps
-        J[:, j] = _reduced_rhs(ground, h, xc).imag / eps
+        J[:, j] = np.array(_reduced_rhs(ground == "rough", h, xc)).imag / eps
     # theta column: stay away from pi/2.  Near theta = 0 the stencil may cross zero, where
     # h~ = h sgn(theta) jumps; evaluating there with -h (h enters only as h~ and h^2)
     # continues the branch of theta0 analytically across zero.
@@ -235,7 +228,7 @@ def reduced_jacobian(h: float, ground: str, theta0: float, omega20: float,
     def g(theta):
         x = x0.copy()
         x[0] = theta
-        return _reduced_rhs(ground, h if theta * side > 0 else -h, x)
+        return np.array(_reduced_rhs(ground == "rough", h if theta * side > 0 else -h, x))
 
     def central(delta):
         return (g(theta0 + delta) - g(theta0 - delta)) / (2.0 * delta)
