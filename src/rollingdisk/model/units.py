@@ -29,7 +29,7 @@ from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["parse_length", "parse_mass", "parse_acceleration", "NamedDisk", "DISKS",
            "disk_from_options", "KINDS", "unit_of", "can_convert", "to_si", "si_view",
-           "si_fields"]
+           "si_fields", "result_html"]
 
 
 # ------------------------------------------------------------------------------ parsing
@@ -475,3 +475,40 @@ def si_fields(result, disk: Disk | None = None) -> dict:
         raise ParameterTypeError(f"result must be a result of rollingdisk with an SI view "
                                  f"(to_si), got {type(result).__name__}")
     return to() if disk is None else to(disk)
+
+
+def result_html(title: str, disk: Disk | None, values: dict, kinds: dict,
+                note: str | None = None) -> str:
+    """A result as a small HTML table for a notebook: one row per field, its value and unit
+    in the paper's units, and its SI value and unit where ``disk``'s scale converts it.
+
+    Parameters
+    ----------
+    title : str
+        The caption.
+    disk : Disk or None
+        The disk whose scale gives the SI column (none when it has no scale).
+    values : dict
+        Field name -> value (numbers, strings, None).
+    kinds : dict
+        Field name -> a key of :data:`KINDS`; fields without a kind get no unit.
+    note : str, optional
+        A line under the table.
+    """
+    from rollingdisk.util.display import html_table
+
+    si = disk is not None and getattr(disk, "radius", None) is not None
+    rows = []
+    for name, v in values.items():
+        kind = kinds.get(name)
+        unit = KINDS[kind][0] if kind else ""
+        row = [name, v, unit]
+        if si:
+            if kind and kind not in ("angle", "dimensionless") and can_convert(disk, kind) \
+                    and isinstance(v, (int, float)) and not isinstance(v, bool):
+                row += [to_si(disk, kind, v), KINDS[kind][1]]
+            else:
+                row += ["", ""]
+        rows.append(tuple(row))
+    header = ("field", "value", "unit") + (("SI value", "SI unit") if si else ())
+    return html_table(title, header, rows, note)
