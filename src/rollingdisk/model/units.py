@@ -19,6 +19,7 @@ this module is where physical input comes in and physical output goes out:
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -84,9 +85,21 @@ def _parse(value, kind: str, name: str) -> float:
     return x
 
 
+#: A power whose exponent is itself raised to a power (``10**10**10``): pint would compute
+#: it exactly, for ever; such input is refused before it reaches pint.
+_NESTED_POWER = re.compile(r"(\*\*|\^)\s*[-+(\s]*[\d.]+([eE][-+]?\d+)?\s*\)?\s*(\*\*|\^)")
+_EXPONENT = re.compile(r"(?:\*\*|\^)\s*[-+(\s]*([\d.]+(?:[eE][-+]?\d+)?)")
+#: Longest text handed to pint.
+_MAX_TEXT = 200
+
+
 def _parse_with_unit(text, dim, si_unit, expect, name, shown) -> float:
     if not any(ch.isdigit() for ch in text):
         raise ParameterError(f"{name} must be {expect}: a number with a unit, got {shown}")
+    if len(text) > _MAX_TEXT or _NESTED_POWER.search(text) or any(
+            float(e) > 1000.0 for e in _EXPONENT.findall(text)):
+        raise ParameterError(f"{name} must be {expect}; got {shown}, too long or with "
+                             "powers beyond floating-point range")
     ureg = _registry()
     try:
         q = ureg.Quantity(text)
