@@ -91,8 +91,9 @@ class EulerDisk:
         ``g`` [m/s^2], ``> 0``; standard gravity, 9.80665 (the default of :class:`Disk`:
         one value of ``g`` in the library).
     mu : float
-        Coulomb coefficient at saturation (dimensionless), ``>= 0``; 0.3, chosen for chrome-plated steel on
-        a glass mirror (dry glass-on-metal lies between about 0.2 and 0.6).
+        Coulomb coefficient at saturation (dimensionless), ``>= 0``; 0.3, chosen for
+        chrome-plated steel on a glass mirror (dry glass-on-metal lies between about 0.2
+        and 0.6).
     creep : float
         Creep coefficient ``k > 0`` (units of ``1/sqrt(a g)``): ``F_t ~ -k F_z u`` at small
         slip, saturation at ``|u| = 3 mu/k``.  Chosen (1000: saturation at 0.9e-3 sqrt(a g)

@@ -123,7 +123,7 @@ class Trajectory:
             object.__setattr__(self, "mode", a)
 
     def __repr__(self) -> str:
-        return (f"Trajectory(ground={self.ground!r}, h={self.disk.h:g}, t=[{self.t[0]:g}, "
+        return (f"{type(self).__name__}(ground={self.ground!r}, h={self.disk.h:g}, t=[{self.t[0]:g}, "
                 f"{self.t[-1]:g}], n={self.t.size}, status={self.status!r}, "
                 f"n_steps={self.n_steps})")
 
@@ -285,7 +285,7 @@ class Trajectory:
                   "t_end": float(self.t[-1]), "theta_start": float(self.theta[0]),
                   "theta_end": float(self.theta[-1]), "E_start": float(self.E[0]),
                   "E_end": float(self.E[-1])}
-        if self.transitions:
+        if self.mode is not None:  # a Coulomb run: its mode changes
             values["transitions"] = len(self.transitions)
         kinds = {"t_start": "time", "t_end": "time", "theta_start": "angle",
                  "theta_end": "angle", "E_start": "energy", "E_end": "energy",
