@@ -174,6 +174,27 @@ from rollingdisk.model import (
 from rollingdisk.model import (
     velocity_of_C as velocity_of_C,
 )
+from rollingdisk.model.units import (
+    DISKS as DISKS,
+)
+from rollingdisk.model.units import (
+    NamedDisk as NamedDisk,
+)
+from rollingdisk.model.units import (
+    disk_from_options as disk_from_options,
+)
+from rollingdisk.model.units import (
+    parse_acceleration as parse_acceleration,
+)
+from rollingdisk.model.units import (
+    parse_length as parse_length,
+)
+from rollingdisk.model.units import (
+    parse_mass as parse_mass,
+)
+from rollingdisk.model.units import (
+    si_fields as si_fields,
+)
 from rollingdisk.theory import (
     NO_MOTION as NO_MOTION,
 )
@@ -294,6 +315,13 @@ __all__ = [
     "energy",
     "contact_point",
     "velocity_of_C",
+    "parse_length",
+    "parse_mass",
+    "parse_acceleration",
+    "NamedDisk",
+    "DISKS",
+    "disk_from_options",
+    "si_fields",
     "NoSteadyMotion",
     "SteadyMotion",
     "steady_motion",

@@ -127,7 +127,8 @@ def steady_trajectory(h: float, ground: str, theta0: float, *, Omega0: float | N
     from rollingdisk.theory.oscillations import stability
     from rollingdisk.theory.steady import steady_motion
 
-    motion = steady_motion(Disk(h), ground, theta0, Omega0=Omega0, r_C=r_C, r_P=r_P)
+    disk = h if isinstance(h, Disk) else Disk(h)  # a Disk keeps its physical scale
+    motion = steady_motion(disk, ground, theta0, Omega0=Omega0, r_C=r_C, r_P=r_P)
     t_end = check_real("t_end", t_end, low=0.0, low_open=True)
     traj = simulate_steady(motion, t_end, perturb=perturb, kick=kick,
                            t_eval=np.linspace(0.0, t_end, max(2, int(n_out))))

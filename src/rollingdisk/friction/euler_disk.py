@@ -47,7 +47,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rollingdisk.friction import coulomb as _cl
-from rollingdisk.model.disk import Disk
+from rollingdisk.model.disk import STANDARD_GRAVITY, Disk
 from rollingdisk.model.geometry import _geometry, _inertia
 from rollingdisk.model.outcomes import AT_REST, EDGE_CONTACT, FELL_FLAT, LIFT_OFF, names
 from rollingdisk.util.checks import check_int, check_real
@@ -88,10 +88,12 @@ class EulerDisk:
     mass : float
         ``m`` [kg], ``> 0``; 0.45 kg (the toy is sold at about 0.4-0.45 kg; Moffatt uses 0.4).
     gravity : float
-        ``g`` [m/s^2], ``> 0``.
+        ``g`` [m/s^2], ``> 0``; standard gravity, 9.80665 (the default of :class:`Disk`:
+        one value of ``g`` in the library).
     mu : float
-        Coulomb coefficient at saturation, ``>= 0``; 0.3, chosen for chrome-plated steel on
-        a glass mirror (dry glass-on-metal lies between about 0.2 and 0.6).
+        Coulomb coefficient at saturation (dimensionless), ``>= 0``; 0.3, chosen for
+        chrome-plated steel on a glass mirror (dry glass-on-metal lies between about 0.2
+        and 0.6).
     creep : float
         Creep coefficient ``k > 0`` (units of ``1/sqrt(a g)``): ``F_t ~ -k F_z u`` at small
         slip, saturation at ``|u| = 3 mu/k``.  Chosen (1000: saturation at 0.9e-3 sqrt(a g)
@@ -105,19 +107,23 @@ class EulerDisk:
     alpha0 : float
         Initial tilt ``alpha0 = pi/2 - theta0`` in ``(0, pi/2)`` rad; 0.3.
     omega_eps : float
-        Smoothing ``eps > 0`` of the rolling resistance near ``omega_h = 0``; 1e-6.
+        Smoothing ``eps > 0`` of the rolling resistance near ``omega_h = 0`` (units of
+        ``sqrt(g/a)``); 1e-6.
+
+    A toy of any other size: :meth:`from_disk` (e.g. a disk of
+    :func:`rollingdisk.model.units.disk_from_options`).
 
     Examples
     --------
     >>> toy = EulerDisk()
     >>> round(toy.h, 4), round(toy.time_unit, 5)
-    (0.1693, 0.06183)
+    (0.1693, 0.06184)
     """
 
     radius: float = 0.0375
     thickness: float = 0.0127
     mass: float = 0.45
-    gravity: float = 9.81
+    gravity: float = STANDARD_GRAVITY
     mu: float = 0.3
     creep: float = 1000.0
     rolling_resistance: float = 5e-4
@@ -137,6 +143,29 @@ class EulerDisk:
         object.__setattr__(self, "alpha0", check_real("alpha0", self.alpha0, low=0.0,
                                                       high=math.pi / 2, low_open=True,
                                                       high_open=True))
+
+    @classmethod
+    def from_disk(cls, disk: Disk, **parameters) -> EulerDisk:
+        """The toy made of ``disk`` (radius, thickness ``2 h a``, mass and gravity from its
+        physical scale), with the contact parameters (``mu``, ``creep``, ...) given or the
+        defaults.
+
+        Raises :class:`ParameterError` when the disk has no radius and mass.
+
+        Examples
+        --------
+        >>> from rollingdisk.model.units import disk_from_options
+        >>> EulerDisk.from_disk(disk_from_options(disk="euro-1")).thickness
+        0.00233
+        """
+        if not isinstance(disk, Disk):
+            raise ParameterError(f"disk must be a Disk, got {type(disk).__name__}")
+        disk._need("radius", "mass")
+        for name in ("radius", "thickness", "mass", "gravity"):
+            if name in parameters:
+                raise ParameterError(f"{name} comes from the disk; do not give it too")
+        return cls(radius=disk.radius, thickness=2.0 * disk.h * disk.radius, mass=disk.mass,
+                   gravity=disk.gravity, **parameters)
 
     @property
     def disk(self) -> Disk:
@@ -293,6 +322,72 @@ class EulerDiskResult:
                 "slip_speed": self.slip_speed, "F_z": self.F_z, "E": self.E,
                 **{f"dissipated_{k}": v for k, v in self.dissipated.items()}}
         return {k: np.asarray(v)[idx] for k, v in cols.items()}
+
+    # -- data out and notebooks ------------------------------------------------------
+    def _columns(self) -> dict:
+        return {"t": self.t, "alpha": self.alpha, "Omega": self.Omega,
+                "contact_speed": self.contact_speed, "slip_speed": self.slip_speed,
+                "F_z": self.F_z, "E": self.E,
+                **{f"dissipated_{k}": v for k, v in self.dissipated.items()}}
+
+    def _attrs(self) -> dict:
+        return {"status": self.status, "end": self.end, "message": self.message,
+                "mu": self.toy.mu, "creep": self.toy.creep,
+                "rolling_resistance": self.toy.rolling_resistance,
+                "air_viscosity_si": self.toy.air_viscosity, "alpha0": self.toy.alpha0}
+
+    def to_xarray(self, si: bool | None = None):
+        """The run as an ``xarray.Dataset`` along ``t`` (every accepted step), ``units``
+        and ``long_name`` on every variable, in SI by default (the toy has a scale;
+        ``si=False``: the paper's units, named); the toy's parameters in ``attrs``."""
+        from rollingdisk.integrate.dataout import to_xarray
+
+        return to_xarray(self._columns(), self.toy.disk, si=si, table=EULER_VARIABLES,
+                         attrs=self._attrs())
+
+    def to_dataframe(self, si: bool | None = None):
+        """The run as a ``pandas.DataFrame``, units and long names in ``df.attrs``; as
+        :meth:`to_xarray`."""
+        from rollingdisk.integrate.dataout import to_dataframe
+
+        return to_dataframe(self._columns(), self.toy.disk, si=si, table=EULER_VARIABLES,
+                            attrs=self._attrs())
+
+    def __repr__(self) -> str:
+        from rollingdisk.util.display import short_repr
+
+        return short_repr("EulerDiskResult", {
+            "status": self.status, "end": self.end, "t_end": self.t_end,
+            "t_end_s": self.t_end_s, "points": int(self.t.size),
+            "exponents": self.exponents, "energy_balance": self.energy_balance,
+            "n_steps": self.n_steps})
+
+    def _repr_html_(self) -> str:
+        from rollingdisk.model.units import result_html
+
+        values = {"status": self.status, "end": self.end, "t_end": self.t_end,
+                  "t0": self.t0, "predicted_t_end": self.predicted_t_end,
+                  "alpha_end": float(self.alpha[-1]), "Omega_end": float(self.Omega[-1]),
+                  **{f"exponent_{k}": v for k, v in self.exponents.items()},
+                  **{f"predicted_exponent_{k}": v for k, v in self.predicted.items()},
+                  "energy_balance": self.energy_balance, "n_steps": self.n_steps}
+        kinds = {"t_end": "time", "t0": "time", "predicted_t_end": "time",
+                 "alpha_end": "angle", "Omega_end": "angular_speed",
+                 "energy_balance": "dimensionless"}
+        return result_html("Euler's disk run to its end", self.toy.disk, values, kinds,
+                           note=self.message)
+
+
+#: Variables of :meth:`EulerDiskResult.to_xarray`: name -> (kind, long name).
+EULER_VARIABLES = {
+    "t": ("time", "time"),
+    "alpha": ("angle", "tilt alpha = pi/2 - |theta|"),
+    "Omega": ("angular_speed", "precession rate d psi/dt = omega3 / cos(theta) (eq. 2)"),
+    "contact_speed": ("speed", "speed of the contact point along the plane (eq. 5)"),
+    "slip_speed": ("speed", "slip speed |u| of the contact point (eq. 6)"),
+    "F_z": ("force", "normal force F_z (eq. 11)"),
+    "E": ("energy", "mechanical energy (eq. 13)"),
+}
 
 
 # ------------------------------------------------------------------------- kernels

@@ -168,7 +168,8 @@ class AirDrag:
     small and ``cos(theta) = sin(alpha) ~ alpha``: the power is ``-c Omega^2 / alpha``,
     Moffatt's dissipation ``Phi = 2 pi mu_air a^3 Omega^2 / alpha`` in the air gap of
     thickness ``a alpha`` sheared at speed ``a Omega``.  Hence ``c = 2 pi mu_air a^(3/2) /
-    (m g^(1/2))`` in the library's units (``mu_air ~ 1.8e-5 Pa s``).  Independent of
+    (m g^(1/2))`` in the library's units (``mu_air ~ 1.8e-5 Pa s``): ``c`` is a moment per
+    angular speed, in units of ``m g a / sqrt(g/a) = m a^(3/2) g^(1/2)``.  Independent of
     ``F_z``.
 
     Source: H. K. Moffatt, "Euler's disk and its finite-time singularity", Nature 404
@@ -209,16 +210,18 @@ class Coulomb:
     Parameters
     ----------
     mu_s : float
-        Static friction coefficient, ``>= 0``: the disk rolls while the friction force
-        needed for rolling stays inside the cone, ``|F_t| <= mu_s F_z``.
+        Static friction coefficient (dimensionless), ``>= 0``: the disk rolls while the
+        friction force needed for rolling stays inside the cone, ``|F_t| <= mu_s F_z``.
     mu_k : float, optional
-        Kinetic coefficient, ``0 <= mu_k <= mu_s``; ``mu_s`` by default.  Sliding friction
-        is ``F_t = -mu_k F_z u/|u|``, ``u`` the slip velocity of the contact point (eq. 6).
+        Kinetic coefficient (dimensionless), ``0 <= mu_k <= mu_s``; ``mu_s`` by default.
+        Sliding friction is ``F_t = -mu_k F_z u/|u|``, ``u`` the slip velocity of the
+        contact point (eq. 6).
     rolling_resistance : RollingResistance or float, optional
     pivot : PivotFriction or float, optional
     air : AirDrag or float, optional
         Dissipative contact moments (a number ``c`` means ``Model(c)``; 0 or ``None``
-        means none).
+        means none); ``c`` of rolling resistance and pivoting is a length in units of the
+        radius ``a``, of the air film in units of ``m a^(3/2) g^(1/2)`` (see each model).
 
     Raises
     ------

@@ -198,7 +198,7 @@ def _inertial_slip(h, z):
     return _cl._to_inertial(z[4], u_x, u_y)
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, repr=False)  # Trajectory's short repr, not every array
 class CoulombTrajectory(Trajectory):
     """A :class:`~rollingdisk.Trajectory` on Coulomb ground (what :func:`simulate_coulomb`
     returns): the contact force at each stored point follows from that point's mode."""

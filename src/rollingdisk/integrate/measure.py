@@ -277,6 +277,16 @@ class TheoryComparison:
         """The fields as a plain dict."""
         return dict(self.__dict__)
 
+    def _repr_html_(self) -> str:
+        from rollingdisk.model.units import result_html
+
+        rate = "angular_speed" if self.kind == "frequency" else "rate"
+        kinds = {"varpi2": "rate_sq", "predicted": rate, "measured": rate,
+                 "rel_error": "dimensionless", "departure": "angle",
+                 "linear_amplitude": "angle", "max_departure": "angle"}
+        return result_html(f"Simulation vs linear theory ({self.kind})", None,
+                           self.as_dict(), kinds)
+
 
 def compare_with_theory(traj: Trajectory, stability=None) -> TheoryComparison:
     """Compare a run started near a steady motion with the linear theory of section 4.

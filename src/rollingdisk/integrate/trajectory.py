@@ -123,7 +123,7 @@ class Trajectory:
             object.__setattr__(self, "mode", a)
 
     def __repr__(self) -> str:
-        return (f"Trajectory(ground={self.ground!r}, h={self.disk.h:g}, t=[{self.t[0]:g}, "
+        return (f"{type(self).__name__}(ground={self.ground!r}, h={self.disk.h:g}, t=[{self.t[0]:g}, "
                 f"{self.t[-1]:g}], n={self.t.size}, status={self.status!r}, "
                 f"n_steps={self.n_steps})")
 
@@ -197,10 +197,16 @@ class Trajectory:
         """Total mechanical energy, units of m g a (eq. 13)."""
         return np.asarray(energy(self.disk, _layout(self.ground), self.y))
 
-    def as_columns(self) -> dict[str, np.ndarray]:
+    def as_columns(self, si: bool = False) -> dict[str, np.ndarray]:
         """Columns ``t, X_C, Y_C, psi, theta, phi, omega1, omega2, omega3, X_P, Y_P, F_x,
         F_y, F_z, E`` (the CSV layout of ``rollingdisk simulate --out``), and on smooth
-        ground ``V_X, V_Y`` after them, so that a smooth run can be restarted from a row."""
+        ground ``V_X, V_Y`` after them, so that a smooth run can be restarted from a row.
+
+        ``si=True``: in SI units where the disk's scale allows (:meth:`column_units`)."""
+        if si:
+            from rollingdisk.integrate.dataout import convert_columns
+
+            return convert_columns(self.as_columns(), self.disk, True)
         cols = {"t": self.t, "X_C": self.X_C, "Y_C": self.Y_C, "psi": self.psi,
                 "theta": self.theta, "phi": self.phi, "omega1": self.omega1,
                 "omega2": self.omega2, "omega3": self.omega3, "X_P": self.X_P,
@@ -211,3 +217,78 @@ class Trajectory:
         if self.mode is not None:
             cols["mode"] = self.mode
         return cols
+
+    # -- data out (rollingdisk.integrate.dataout) and notebooks -------------------------
+    def _data_columns(self) -> dict[str, np.ndarray]:
+        cols = self.as_columns()
+        for k, v in (self.dissipated or {}).items():
+            cols[f"dissipated_{k}"] = np.asarray(v)
+        return cols
+
+    def _data_attrs(self) -> dict:
+        g = self.ground
+        attrs = {"ground": g if isinstance(g, str) else getattr(g, "name", type(g).__name__),
+                 "status": self.status, "message": self.message, "method": self.method,
+                 "n_steps": int(self.n_steps)}
+        if not isinstance(g, str) and hasattr(g, "as_dict"):
+            attrs.update({f"ground_{k}": v for k, v in g.as_dict().items()
+                          if k != "ground" and v is not None})
+        return attrs
+
+    def column_units(self, si: bool | None = False) -> dict[str, str]:
+        """Column name -> unit of :meth:`as_columns` (``si=False``: the paper's units,
+        ``"sqrt(a/g)"``, ``"a"``, ...; ``si=True``: SI where the disk's scale allows)."""
+        from rollingdisk.integrate.dataout import column_units
+
+        return column_units(self.as_columns(), self.disk, si)
+
+    def csv_header(self, si: bool = False) -> str:
+        """The CSV header of :meth:`as_columns` with units, ``t [sqrt(a/g)],X_C [a],...``
+        (``si=True``: ``t [s],X_C [m],...``, for the values of ``as_columns(si=True)``)."""
+        from rollingdisk.integrate.dataout import csv_header
+
+        return csv_header(self.as_columns(), self.disk, si)
+
+    def to_xarray(self, si: bool | None = None):
+        """The run as an ``xarray.Dataset`` along ``t``: every column of :meth:`as_columns`
+        (and the dissipated energies of a Coulomb run), ``units`` and ``long_name`` on
+        each; SI when the disk has a physical scale (``si=None``), else the paper's units,
+        named.  The disk, ground and how the run ended are in ``attrs``.
+
+        Examples
+        --------
+        >>> import rollingdisk as rd
+        >>> m = rd.steady_motion(rd.Disk.from_dimensions(0.0375, 0.0127, 0.45), "rough",
+        ...                      0.5, Omega0=2.0)
+        >>> ds = rd.simulate_steady(m, 1.0).to_xarray()
+        >>> ds.theta.attrs["units"], ds.t.attrs["units"], ds.F_z.attrs["units"]
+        ('rad', 's', 'N')
+        """
+        from rollingdisk.integrate.dataout import to_xarray
+
+        return to_xarray(self._data_columns(), self.disk, si=si, attrs=self._data_attrs())
+
+    def to_dataframe(self, si: bool | None = None):
+        """The run as a ``pandas.DataFrame`` (one row per stored point), units and long
+        names in ``df.attrs["units"]``, ``df.attrs["long_name"]``; as :meth:`to_xarray`."""
+        from rollingdisk.integrate.dataout import to_dataframe
+
+        return to_dataframe(self._data_columns(), self.disk, si=si, attrs=self._data_attrs())
+
+    def _repr_html_(self) -> str:
+        from rollingdisk.model.units import result_html
+
+        g = self._data_attrs()["ground"]
+        values = {"ground": g, "h": self.disk.h, "status": self.status,
+                  "method": self.method, "points": int(self.t.size),
+                  "n_steps": int(self.n_steps), "t_start": float(self.t[0]),
+                  "t_end": float(self.t[-1]), "theta_start": float(self.theta[0]),
+                  "theta_end": float(self.theta[-1]), "E_start": float(self.E[0]),
+                  "E_end": float(self.E[-1])}
+        if self.mode is not None:  # a Coulomb run: its mode changes
+            values["transitions"] = len(self.transitions)
+        kinds = {"t_start": "time", "t_end": "time", "theta_start": "angle",
+                 "theta_end": "angle", "E_start": "energy", "E_end": "energy",
+                 "h": "dimensionless"}
+        return result_html(f"Trajectory on {g} ground", self.disk, values, kinds,
+                           note=self.message)

@@ -13,11 +13,14 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from rollingdisk.model.geometry import _inertia, h_tilde
 from rollingdisk.util.checks import check_real
 from rollingdisk.util.errors import ParameterError
 
-__all__ = ["Disk", "DEFAULT_H", "GROUNDS", "H_MAX", "STANDARD_GRAVITY", "check_ground", "check_h"]
+__all__ = ["Disk", "DEFAULT_H", "GROUNDS", "H_MAX", "STANDARD_GRAVITY", "check_ground", "check_h",
+           "h_of"]
 
 
 
@@ -40,8 +43,26 @@ STANDARD_GRAVITY = 9.80665
 
 
 def check_h(h) -> float:
-    """``h`` as a float, or ``ValueError``: the half-thickness must lie in ``[0, H_MAX]``."""
+    """``h`` as a float, or ``ValueError``: the half-thickness must lie in ``[0, H_MAX]``.
+
+    A :class:`Disk` stands for its half-thickness: ``check_h(disk) == disk.h``.
+    """
+    if isinstance(h, Disk):
+        return h.h
     return check_real("h", h, low=0.0, high=H_MAX)
+
+
+def h_of(h):
+    """``disk.h`` for a :class:`Disk`, anything else unchanged (the functions that take an
+    ``h`` or an array of them also take a disk)."""
+    return h.h if isinstance(h, Disk) else h
+
+
+def _number(x):
+    """A real number as it is; a sequence or array as a float ndarray (for the converters)."""
+    if isinstance(x, (int, float)) and not isinstance(x, bool):
+        return x
+    return np.asarray(x, dtype=float)
 
 
 def check_ground(ground) -> str:
@@ -144,29 +165,30 @@ class Disk:
         return math.sqrt(self.radius / self.gravity)
 
     def length_to_si(self, x):
-        """Lengths: units of ``a`` -> metres."""
+        """Lengths: units of ``a`` -> metres (a number, a sequence or an array)."""
         self._need("radius")
-        return x * self.radius
+        return _number(x) * self.radius
 
     def time_to_si(self, t):
-        """Times: units of ``sqrt(a/g)`` -> seconds."""
-        return t * self.time_unit
+        """Times: units of ``sqrt(a/g)`` -> seconds (a number, a sequence or an array)."""
+        return _number(t) * self.time_unit
 
     def speed_to_si(self, v):
-        """Speeds: units of ``sqrt(a g)`` -> m/s."""
+        """Speeds: units of ``sqrt(a g)`` -> m/s (a number, a sequence or an array)."""
         self._need("radius")
-        return v * math.sqrt(self.radius * self.gravity)
+        return _number(v) * math.sqrt(self.radius * self.gravity)
 
     def angular_speed_to_si(self, w):
-        """Angular speeds: units of ``sqrt(g/a)`` -> rad/s."""
-        return w / self.time_unit
+        """Angular speeds: units of ``sqrt(g/a)`` -> rad/s (a number, a sequence or an
+        array)."""
+        return _number(w) / self.time_unit
 
     def force_to_si(self, f):
-        """Forces: units of ``m g`` -> newtons."""
+        """Forces: units of ``m g`` -> newtons (a number, a sequence or an array)."""
         self._need("mass")
-        return f * self.mass * self.gravity
+        return _number(f) * self.mass * self.gravity
 
     def energy_to_si(self, e):
-        """Energies: units of ``m g a`` -> joules."""
+        """Energies: units of ``m g a`` -> joules (a number, a sequence or an array)."""
         self._need("mass", "radius")
-        return e * self.mass * self.gravity * self.radius
+        return _number(e) * self.mass * self.gravity * self.radius

@@ -19,6 +19,9 @@ from rollingdisk.plotting.animation import (
     animate as animate,
 )
 from rollingdisk.plotting.animation import (
+    animation_html as animation_html,
+)
+from rollingdisk.plotting.animation import (
     body_frame as body_frame,
 )
 from rollingdisk.plotting.animation import (
@@ -180,6 +183,7 @@ __all__ = [
     "poses",
     "draw_disk",
     "animate",
+    "animation_html",
     "check_animation",
     "writer_for",
     "FRAMES_RANGE",

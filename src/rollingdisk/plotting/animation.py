@@ -33,6 +33,7 @@ from rollingdisk.util.checks import check_int, check_real
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["DiskPose", "body_frame", "disk_pose", "poses", "draw_disk", "animate",
+           "animation_html",
            "check_animation", "writer_for", "FRAMES_RANGE", "FPS_RANGE", "PIXEL_BUDGET"]
 
 #: Number of frames an animation may have.
@@ -323,6 +324,44 @@ def _check_trajectory(traj) -> None:
         raise ParameterError("traj.t must be a non-empty 1-D array of finite times")
 
 
+def _scene(traj, fig, n_frames: int, title: str | None):
+    """The 3D axes on ``fig`` and ``(frame times, draw)``: ``draw(i)`` paints frame ``i``."""
+    tf, frames = poses(traj, n_frames)
+    t = np.asarray(traj.t, float)
+    XP, YP = trajectory_series(traj, "X_P"), trajectory_series(traj, "Y_P")
+    XC, YC = trajectory_series(traj, "X_C"), trajectory_series(traj, "Y_C")
+    (x0, x1), (y0, y1), (z0, z1) = _limits(traj, frames)
+    ax = fig.add_subplot(1, 1, 1, projection="3d")
+    head = title if title is not None else f"{traj.ground} ground, h = {traj.disk.h:.4g}"
+
+    def draw(i):
+        ti, pose = tf[i], frames[i]
+        ax.cla()
+        ax.set_autoscale_on(False)  # fixed limits: no autoscaling from the drawn parts
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(y0, y1)
+        ax.set_zlim(z0, z1)
+        # no axis machinery (ticks, grids and panes cost ~40 % of a frame): the plane
+        # Z = 0 is drawn as one polygon under everything else
+        ax.set_axis_off()
+        ax.add_collection3d(_plane(x0, x1, y0, y1))
+        k = int(np.searchsorted(t, ti, side="right"))
+        ax.computed_zorder = False  # plane first, then the disk (see draw_disk)
+        ax.plot(XP[:k], YP[:k], 0.0 * XP[:k], color="tab:red", lw=1.0, zorder=1.2)
+        ax.plot(XC[:k], YC[:k], 0.0 * XC[:k], color="tab:blue", lw=0.7, ls="--",
+                zorder=1.2)
+        draw_disk(ax, pose)
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(y0, y1)
+        ax.set_zlim(z0, z1)
+        ax.set_box_aspect((x1 - x0, y1 - y0, z1 - z0))
+        ax.view_init(elev=28, azim=-60)
+        ax.set_title(f"{head}   t = {ti:6.2f}", fontsize=9)
+        return []
+
+    return tf, draw
+
+
 def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
             size: tuple[float, float] = (5.0, 4.4), title: str | None = None,
             progress: Callable[[int, int], None] | None = None) -> Path:
@@ -363,14 +402,8 @@ def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
     check_writable(out, name="out")
     from matplotlib.figure import Figure
 
-    tf, frames = poses(traj, n_frames)
-    t = np.asarray(traj.t, float)
-    XP, YP = trajectory_series(traj, "X_P"), trajectory_series(traj, "Y_P")
-    XC, YC = trajectory_series(traj, "X_C"), trajectory_series(traj, "Y_C")
-    (x0, x1), (y0, y1), (z0, z1) = _limits(traj, frames)
     fig = Figure(figsize=size)
-    ax = fig.add_subplot(1, 1, 1, projection="3d")
-    head = title if title is not None else f"{traj.ground} ground, h = {traj.disk.h:.4g}"
+    tf, draw = _scene(traj, fig, n_frames, title)
     import matplotlib as mpl
 
     # not writer.saving(): it finishes the file even when interrupted, and an exception in
@@ -378,28 +411,8 @@ def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
     with atomic_file(out, mode=None) as tmp, mpl.rc_context({"savefig.bbox": None}):
         writer.setup(fig, str(tmp), dpi)
         try:
-            for i, (ti, pose) in enumerate(zip(tf, frames, strict=True)):
-                ax.cla()
-                ax.set_autoscale_on(False)  # fixed limits: no autoscaling from the drawn parts
-                ax.set_xlim(x0, x1)
-                ax.set_ylim(y0, y1)
-                ax.set_zlim(z0, z1)
-                # no axis machinery (ticks, grids and panes cost ~40 % of a frame): the plane
-                # Z = 0 is drawn as one polygon under everything else
-                ax.set_axis_off()
-                ax.add_collection3d(_plane(x0, x1, y0, y1))
-                k = int(np.searchsorted(t, ti, side="right"))
-                ax.computed_zorder = False  # plane first, then the disk (see draw_disk)
-                ax.plot(XP[:k], YP[:k], 0.0 * XP[:k], color="tab:red", lw=1.0, zorder=1.2)
-                ax.plot(XC[:k], YC[:k], 0.0 * XC[:k], color="tab:blue", lw=0.7, ls="--",
-                        zorder=1.2)
-                draw_disk(ax, pose)
-                ax.set_xlim(x0, x1)
-                ax.set_ylim(y0, y1)
-                ax.set_zlim(z0, z1)
-                ax.set_box_aspect((x1 - x0, y1 - y0, z1 - z0))
-                ax.view_init(elev=28, azim=-60)
-                ax.set_title(f"{head}   t = {ti:6.2f}", fontsize=9)
+            for i in range(len(tf)):
+                draw(i)
                 writer.grab_frame()
                 if progress:
                     progress(i + 1, len(tf))
@@ -408,3 +421,44 @@ def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
             raise
         writer.finish()
     return out
+
+
+def animation_html(traj, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
+                   size: tuple[float, float] = (5.0, 4.4), title: str | None = None) -> str:
+    """The 3D animation of ``traj`` (as :func:`animate` draws it) as inline HTML for a
+    notebook: matplotlib's ``to_jshtml`` (frames embedded as PNG, play controls), no file.
+
+    Parameters
+    ----------
+    traj : Trajectory
+        The motion to draw (``disk, ground, t, y``).
+    n_frames, fps, dpi, size
+        Checked by :func:`check_animation`.
+    title : str, optional
+        Title above the frames (default: the ground and ``h``).
+
+    Returns
+    -------
+    str
+        HTML; in Jupyter, ``IPython.display.HTML(animation_html(traj))`` shows it.
+
+    Examples
+    --------
+    >>> import rollingdisk as rd
+    >>> m = rd.steady_motion(rd.Disk(h=0.17), "rough", 0.5, Omega0=2.0)
+    >>> html = animation_html(rd.simulate_steady(m, 2.0), n_frames=2, dpi=20)
+    >>> "<img" in html or "img id" in html
+    True
+    """
+    _check_trajectory(traj)
+    n_frames, fps, dpi, size = check_animation(n_frames, fps, dpi, size)
+    import matplotlib as mpl
+    from matplotlib import animation as mpl_animation
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=size, dpi=dpi)
+    tf, draw = _scene(traj, fig, n_frames, title)
+    anim = mpl_animation.FuncAnimation(fig, draw, frames=len(tf), interval=1000.0 / fps,
+                                       blit=False, repeat=True)
+    with mpl.rc_context({"savefig.bbox": None, "animation.embed_limit": 200.0}):
+        return anim.to_jshtml(fps=fps, default_mode="loop")

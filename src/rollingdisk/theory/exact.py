@@ -245,6 +245,40 @@ class ExactMotion:
                 "drift": None if self.drift is None else list(self.drift),
                 "t_end": self.t_end, "theta_end": self.theta_end}
 
+    # -- SI view and notebooks (issue 19) ----------------------------------------------
+    _KINDS = {"h": "dimensionless", "E": "energy", "theta_min": "angle",
+              "theta_max": "angle", "amplitude": "angle", "period": "time",
+              "frequency": "angular_speed", "delta_psi": "angle", "delta_phi": "angle",
+              "t_end": "time", "theta_end": "angle"}
+
+    def to_si(self, disk: Disk | None = None) -> dict:
+        """:meth:`as_dict` with SI values beside it (``period_si`` [s], ``frequency_si``
+        [rad/s], ``E_si`` [J] when the disk has a mass, ``t_end_si`` [s], ``drift_si`` [m])
+        and a ``"units"`` map; through ``disk`` (default: this motion's disk)."""
+        from rollingdisk.model.units import si_view
+
+        disk = self.disk if disk is None else disk
+        disk._need("radius")
+        out = si_view(disk, self.as_dict(), self._KINDS)
+        if self.drift is not None:
+            out["drift_si"] = [float(disk.length_to_si(d)) for d in self.drift]
+            out["units"].update(drift="a", drift_si="m")
+        return out
+
+    def __repr__(self) -> str:
+        from rollingdisk.util.display import short_repr
+
+        d = self.as_dict()
+        return short_repr("ExactMotion", {k: d[k] for k in (
+            "ground", "h", "status", "theta_min", "theta_max", "period", "delta_psi",
+            "t_end") if d[k] is not None or k == "period"})
+
+    def _repr_html_(self) -> str:
+        from rollingdisk.model.units import result_html
+
+        return result_html(f"ExactMotion on {self.ground} ground", self.disk,
+                           self.as_dict(), self._KINDS)
+
 
 def _orbit_normal_force(rough, h, theta, w2, w3, q):
     a1, c1, _, _ = _theta_coefficients(rough, h, theta, w2, w3)

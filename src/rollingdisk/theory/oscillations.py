@@ -12,16 +12,19 @@ the motion is stable when ``varpi^2 > 0``.  ``varpi^2`` is computed two independ
 All closed forms were re-derived with sympy (:mod:`rollingdisk.symbolic.sections34`).  The
 paper's ``P0`` of eq. (45) lacks a factor ``sqrt(1 + p0^2)`` and its eq. (44) has
 ``3 + 4h^2`` for ``3 + 16h^2``; this module uses the derived forms (docs/errata.md).
+
+Every function that takes a half-thickness ``h`` also takes a :class:`~rollingdisk.Disk`
+(its ``h``; :func:`thresholds` keeps the disk, for the SI view of its speeds).
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from rollingdisk.model.disk import check_ground, check_h
+from rollingdisk.model.disk import Disk, check_ground, check_h, h_of
 from rollingdisk.model.equations import _reduced_rhs
 from rollingdisk.model.geometry import h_tilde
 from rollingdisk.theory.steady import Omega0_sq, SteadyMotion, _map_domain
@@ -94,6 +97,41 @@ class Stability:
                 "varpi": self.varpi if self.stable else None, "period": self.period,
                 "growth_rate": self.growth_rate}
 
+    def __repr__(self) -> str:
+        from rollingdisk.util.display import short_repr
+
+        return short_repr("Stability", {k: v for k, v in self.as_dict().items()
+                                        if k != "varpi" and (v is not None or k == "period")})
+
+    def to_si(self, disk: Disk) -> dict:
+        """The fields (:meth:`as_dict`) with SI values beside them through ``disk``'s scale:
+        ``varpi2_si`` [1/s^2], ``varpi_si`` [rad/s], ``period_si`` [s], ``growth_rate_si``
+        [1/s], and a ``"units"`` map.
+
+        Examples
+        --------
+        >>> Stability(4.0).to_si(Disk(0.1, radius=9.80665))["period_si"] == math.pi
+        True
+        """
+        from rollingdisk.model.units import si_view
+
+        if not isinstance(disk, Disk):
+            raise ParameterError(f"disk must be a Disk with a physical scale, got "
+                                 f"{type(disk).__name__}")
+        disk._need("radius")
+        return si_view(disk, self.as_dict(), STABILITY_KINDS)
+
+    def _repr_html_(self) -> str:
+        from rollingdisk.model.units import result_html
+
+        return result_html("Stability (eqs. 39, 50)", None, self.as_dict(), STABILITY_KINDS)
+
+
+#: The kind of quantity of each field of :class:`Stability` (keys of
+#: :data:`rollingdisk.model.units.KINDS`).
+STABILITY_KINDS = {"varpi2": "rate_sq", "stable": "dimensionless", "varpi": "angular_speed",
+                   "period": "time", "growth_rate": "rate"}
+
 
 # ---------------------------------------------------------------------------------------
 # closed forms in (omega20, omega30): eqs. (40)-(41) and (51)
@@ -120,7 +158,7 @@ def varpi2_closed_form(h, ground: str, theta0, omega20, omega30):
     theta0``, with ``theta0 = 0`` taken as ``0+`` (only meaningful for ``h = 0``).
     """
     ground = check_ground(ground)
-    h, t, w2, w3 = (np.asarray(a, dtype=float) for a in (h, theta0, omega20, omega30))
+    h, t, w2, w3 = (np.asarray(a, dtype=float) for a in (h_of(h), theta0, omega20, omega30))
     ht = h_tilde(h, t)
     p = np.tan(t)
     h2 = h * h
@@ -282,7 +320,7 @@ def circle_coefficients(h, ground: str, theta0):
     ``den > 0`` everywhere.  Element-wise; ``theta0 = 0`` is the limit ``0+``.
     """
     ground = check_ground(ground)
-    h, t = np.broadcast_arrays(np.asarray(h, dtype=float), np.asarray(theta0, dtype=float))
+    h, t = np.broadcast_arrays(np.asarray(h_of(h), dtype=float), np.asarray(theta0, dtype=float))
     ht = h_tilde(h, t)
     p = np.tan(t)
     h2 = h * h
@@ -312,7 +350,8 @@ def varpi2_circle(h, ground: str, theta0, omega30):
     Arrays in (broadcast), array out; NaN where ``omega30 = 0`` or outside
     ``h >= 0, |theta0| < pi/2``.  Any ``omega30 != 0`` is a steady circle (section 3.2).
     """
-    h, t, w = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (h, theta0, omega30)))
+    h, t, w = np.broadcast_arrays(*(np.asarray(a, dtype=float)
+                                    for a in (h_of(h), theta0, omega30)))
     with np.errstate(all="ignore"):
         P0, P1, P2, den = circle_coefficients(h, ground, t)
         w2 = w * w
@@ -326,6 +365,7 @@ def varpi2_rough_rC(h, theta0, r_C):
     ``Omega0^2`` from eq. (31) (corrected), ``omega30^2 = Omega0^2 cos^2 theta0``, then
     eq. (45).  NaN where ``Omega0^2 <= 0`` (no steady motion) or outside the domain.
     """
+    h = h_of(h)
     Om2 = Omega0_sq(h, theta0, r_C)
     with np.errstate(all="ignore"):
         ok = Om2 > 0
@@ -351,6 +391,7 @@ def critical_omega30_sq(h, ground: str, theta0):
     Circles with ``lower < omega30^2 < upper`` are unstable, all others stable.  Both NaN
     where there is no real positive root (stable for every ``omega30``).
     """
+    h = h_of(h)
     P0, P1, P2, den = circle_coefficients(h, ground, theta0)
     with np.errstate(all="ignore"):
         D = P1 * P1 - 4.0 * P0 * P2
@@ -382,7 +423,8 @@ def stable_for_all_omega30(h, ground: str, theta0):
     is eq. (59): ``3p^4 - 4h~p^3 + 6p^2 - 12h~p - 1 + 4h^2 > 0``.  Boolean array (False
     outside the domain).
     """
-    h_a, t_a = np.broadcast_arrays(np.asarray(h, dtype=float), np.asarray(theta0, dtype=float))
+    h_a, t_a = np.broadcast_arrays(np.asarray(h_of(h), dtype=float),
+                                   np.asarray(theta0, dtype=float))
     lower, upper = critical_omega30_sq(h_a, ground, t_a)  # no positive root: stable for all
     return (np.isnan(upper) & _map_domain(h_a, t_a))[()]
 
@@ -397,6 +439,7 @@ class Thresholds:
     Attributes
     ----------
     h : float
+        Half-thickness (units of the radius ``a``).
     rough_straight_line_omega20_sq : float
         eq. (42): ``(3 + 8h^2) sqrt(1 + h^2) / (3 (3 + 2h^2))``.
     rough_se_circle_omega30_sq : float
@@ -406,6 +449,13 @@ class Thresholds:
         eq. (53): ``(3 + 4h^2) sqrt(1 + h^2) / 3``.
     smooth_spin_omega30_sq : float
         eq. (57): ``12 / ((3 + 4h^2) sqrt(1 + h^2))``.
+    disk : Disk or None
+        The disk when :func:`thresholds` was given one: its physical scale gives the SI
+        view (:meth:`to_si`).
+
+    All four are squared angular speeds, units of ``g/a``.  On a straight line on rough
+    ground C moves at ``v_C = omega20`` (units ``sqrt(a g)``, no slip, eq. 18), so the
+    first threshold is also the squared rolling speed: :meth:`to_si` gives it in m/s.
     """
 
     h: float
@@ -413,6 +463,49 @@ class Thresholds:
     rough_se_circle_omega30_sq: float
     smooth_straight_line_omega20_sq: float
     smooth_spin_omega30_sq: float
+    disk: Disk | None = field(default=None, compare=False)
+
+    def speeds(self) -> dict:
+        """The thresholds as speeds (square roots), paper's units: the rough straight-line
+        rolling speed ``rough_straight_line_speed`` (``sqrt(a g)``, the speed of C) and the
+        critical angular speeds ``*_omega20``, ``*_omega30`` (``sqrt(g/a)``)."""
+        return {"rough_straight_line_speed": math.sqrt(self.rough_straight_line_omega20_sq),
+                "rough_straight_line_omega20": math.sqrt(self.rough_straight_line_omega20_sq),
+                "rough_se_circle_omega30": math.sqrt(self.rough_se_circle_omega30_sq),
+                "smooth_straight_line_omega20": math.sqrt(self.smooth_straight_line_omega20_sq),
+                "smooth_spin_omega30": math.sqrt(self.smooth_spin_omega30_sq)}
+
+    def to_si(self, disk: Disk | None = None) -> dict:
+        """The thresholds as speeds in SI units: :meth:`speeds` with ``<name>_si`` beside
+        each (``rough_straight_line_speed_si`` in m/s, the critical angular speeds in rad/s)
+        and a ``"units"`` map; the squared dimensionless numbers too (no SI values).
+
+        ``disk`` defaults to the disk given to :func:`thresholds`; it must have a radius.
+
+        Examples
+        --------
+        >>> t = thresholds(Disk.from_dimensions(radius=0.011625, thickness=0.00233))
+        >>> round(t.to_si()["rough_straight_line_speed_si"], 3)   # a 1-euro coin, m/s
+        0.197
+        """
+        from rollingdisk.model.units import si_view
+
+        disk = self.disk if disk is None else disk
+        if not isinstance(disk, Disk):
+            raise ParameterError("Thresholds.to_si needs a Disk with a physical scale: call "
+                                 "thresholds(disk) with one, or pass it here")
+        disk._need("radius")
+        values = {"h": self.h, **self.speeds(),
+                  **{k: getattr(self, k) for k in THRESHOLD_KINDS if k.endswith("_sq")}}
+        return si_view(disk, values, THRESHOLD_KINDS)
+
+    def _repr_html_(self) -> str:
+        from rollingdisk.model.units import result_html
+
+        values = {"h": self.h, **{k: getattr(self, k) for k in THRESHOLD_KINDS
+                                  if k.endswith("_sq")}, **self.speeds()}
+        return result_html("Thresholds (eqs. 42, 43, 53, 57): stable above", self.disk,
+                           values, THRESHOLD_KINDS)
 
     def as_dict(self) -> dict:
         """``{"rough": {...}, "smooth": {...}}``: the layout of ``thresholds --json``."""
@@ -424,13 +517,14 @@ class Thresholds:
         }
 
 
-def thresholds(h: float) -> Thresholds:
+def thresholds(h: float | Disk) -> Thresholds:
     """Stability thresholds of eqs. (42), (43), (53), (57) (all confirmed by derivation).
 
     Parameters
     ----------
-    h : float
-        Half-thickness, ``h >= 0``.
+    h : float or Disk
+        Half-thickness, ``h >= 0``, or a disk (kept in the result: with a physical scale,
+        :meth:`Thresholds.to_si` gives the thresholds in m/s and rad/s).
 
     Returns
     -------
@@ -443,14 +537,29 @@ def thresholds(h: float) -> Thresholds:
     >>> t.rough_straight_line_omega20_sq, t.rough_se_circle_omega30_sq
     (0.3333333333333333, 0.8)
     """
+    disk = h if isinstance(h, Disk) else None
     h = check_h(h)
     h2 = h * h
     r = math.sqrt(1.0 + h2)
     return Thresholds(
+        disk=disk,
         h=h,
         rough_straight_line_omega20_sq=(3.0 + 8.0 * h2) * r / (3.0 * (3.0 + 2.0 * h2)),  # (42)
         rough_se_circle_omega30_sq=12.0 / ((15.0 + 16.0 * h2) * r),  # (43)
         smooth_straight_line_omega20_sq=(3.0 + 4.0 * h2) * r / 3.0,  # (53)
         smooth_spin_omega30_sq=12.0 / ((3.0 + 4.0 * h2) * r),  # (57)
     )
+
+
+#: The kind of quantity of each field of :class:`Thresholds` and of its speeds (keys of
+#: :data:`rollingdisk.model.units.KINDS`).
+THRESHOLD_KINDS = {"h": "dimensionless", "rough_straight_line_omega20_sq": "rate_sq",
+                   "rough_se_circle_omega30_sq": "rate_sq",
+                   "smooth_straight_line_omega20_sq": "rate_sq",
+                   "smooth_spin_omega30_sq": "rate_sq",
+                   "rough_straight_line_speed": "speed",
+                   "rough_straight_line_omega20": "angular_speed",
+                   "rough_se_circle_omega30": "angular_speed",
+                   "smooth_straight_line_omega20": "angular_speed",
+                   "smooth_spin_omega30": "angular_speed"}
 

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rollingdisk.model.disk import Disk, check_ground, check_h
+from rollingdisk.model.disk import Disk, check_ground, check_h, h_of
 from rollingdisk.theory.steady import SteadyMotion
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
@@ -105,7 +105,8 @@ def varpi2_zero_surface(h, ground: str, theta0):
     from rollingdisk.theory.oscillations import critical_omega30_sq
 
     check_ground(ground)
-    lower, upper = critical_omega30_sq(_real_array("h", h), ground, _real_array("theta0", theta0))
+    lower, upper = critical_omega30_sq(_real_array("h", h_of(h)), ground,
+                                       _real_array("theta0", theta0))
     with np.errstate(all="ignore"):
         return np.sqrt(np.where(lower > 0, lower, np.nan))[()], np.sqrt(upper)[()]
 
@@ -162,8 +163,8 @@ def example_motions(h: float) -> ExampleMotions:
     from rollingdisk.theory.oscillations import varpi2_circle
     from rollingdisk.theory.steady import steady_motion
 
-    h = check_h(h)
-    disk = Disk(h)
+    disk = h if isinstance(h, Disk) else Disk(check_h(h))  # a Disk keeps its scale
+    h = disk.h
     th = np.linspace(0.05, 1.4, 55)
     w = np.linspace(0.15, 2.0, 38)
     TH, W = np.meshgrid(th, w)

@@ -22,6 +22,9 @@ The formulas here were re-derived with sympy from the reduced equations (see
 :mod:`rollingdisk.symbolic.sections34`).  The paper's first form of eq. (31) and eq. (33)
 are misprinted (a factor 2 on the ``h~`` term of the denominator); this module uses the
 derived forms, see ``docs/errata.md``.
+
+The map functions that take a half-thickness ``h`` (:func:`Omega0_sq`, :func:`r_C_star`,
+:func:`mu_required_map`, :func:`se_circle_radius`) also take a :class:`Disk` (its ``h``).
 """
 
 from __future__ import annotations
@@ -31,7 +34,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rollingdisk.model.disk import Disk, check_ground, check_h
+from rollingdisk.model.disk import Disk, check_ground, check_h, h_of
 from rollingdisk.model.geometry import _inertia, h_tilde
 from rollingdisk.util.checks import check_real
 from rollingdisk.util.errors import ParameterError
@@ -46,6 +49,14 @@ __all__ = [
     "se_circle_radius",
     "mu_required_map",
 ]
+
+#: The kind of quantity of each field of :class:`SteadyMotion` (keys of
+#: :data:`rollingdisk.model.units.KINDS`): what its SI view converts, and how.
+STEADY_KINDS = {"theta0": "angle", "Omega0": "angular_speed", "omega0": "angular_speed",
+                "omega20": "angular_speed", "omega30": "angular_speed", "r_C": "length",
+                "r_P": "length", "F_y": "force", "v_C": "speed", "v_Cx0": "speed",
+                "v_Cy0": "speed", "y_P0": "length", "h": "dimensionless",
+                "mu_required": "dimensionless"}
 
 #: Tolerance on |y_P0| below which a tilt counts as the static-equilibrium (SE) tilt.
 SE_TOL = 1e-12
@@ -170,6 +181,33 @@ class SteadyMotion:
             out[name] = v
         out["mu_required"] = self.mu_required
         return out
+
+    def to_si(self, disk: Disk | None = None) -> dict:
+        """The fields (:meth:`as_dict`) with their SI values beside them: ``<name>_si``
+        (angular speeds in rad/s, radii in m, speeds in m/s, ``F_y_si`` in N) and a
+        ``"units"`` map; through the scale of ``disk`` (default: this motion's disk).
+
+        Raises :class:`ParameterError` when the disk has no physical scale (no radius).
+
+        Examples
+        --------
+        >>> from rollingdisk.model.units import disk_from_options
+        >>> m = straight_line(disk_from_options(disk="euro-1"), "rough", 1.0)
+        >>> round(m.to_si()["v_C_si"], 4)   # sqrt(a g), a = 11.625 mm
+        0.3376
+        """
+        from rollingdisk.model.units import si_view
+
+        disk = self.disk if disk is None else disk
+        disk._need("radius")
+        return si_view(disk, self.as_dict(), STEADY_KINDS)
+
+    def _repr_html_(self) -> str:
+        from rollingdisk.model.units import result_html
+
+        values = {k: v for k, v in self.as_dict().items()}
+        return result_html(f"SteadyMotion: {self.motion} on {self.ground} ground", self.disk,
+                           values, STEADY_KINDS)
 
 
 # ---------------------------------------------------------------------------------------
@@ -445,7 +483,8 @@ def Omega0_sq(h, theta0, r_C):
     SE tilt (where ``Omega0`` is free) and where the denominator vanishes (``r_C = r_C*``).
     ``theta0 = 0`` is the limit ``theta0 -> 0+``.
     """
-    h, theta0, r_C = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (h, theta0, r_C)))
+    h, theta0, r_C = np.broadcast_arrays(*(np.asarray(a, dtype=float)
+                                           for a in (h_of(h), theta0, r_C)))
     with np.errstate(all="ignore"):
         ht = h_tilde(h, theta0)
         s, c = np.sin(theta0), np.cos(theta0)
@@ -464,7 +503,8 @@ def r_C_star(h, theta0):
     circles need ``r_C < r_C*`` where ``tan(theta0) < h~`` and ``r_C > r_C*`` where
     ``tan(theta0) > h~``.  NaN outside ``h >= 0, |theta0| < pi/2``.
     """
-    h, theta0 = np.broadcast_arrays(np.asarray(h, dtype=float), np.asarray(theta0, dtype=float))
+    h, theta0 = np.broadcast_arrays(np.asarray(h_of(h), dtype=float),
+                                    np.asarray(theta0, dtype=float))
     with np.errstate(all="ignore"):
         ht = h_tilde(h, theta0)
         s, c = np.sin(theta0), np.cos(theta0)
@@ -481,7 +521,7 @@ def mu_required_map(h, theta0, r_C):
     (``Omega0^2 <= 0`` or undefined, see :func:`Omega0_sq`).  A circle survives on Coulomb
     ground with static coefficient ``mu_s`` where ``mu_required_map(...) < mu_s``.
     """
-    Om2 = np.asarray(Omega0_sq(h, theta0, r_C), dtype=float)
+    Om2 = np.asarray(Omega0_sq(h_of(h), theta0, r_C), dtype=float)
     r = np.broadcast_to(np.asarray(r_C, dtype=float), Om2.shape)
     with np.errstate(invalid="ignore"):
         return np.where(Om2 > 0, np.abs(r) * Om2, np.nan)[()]
