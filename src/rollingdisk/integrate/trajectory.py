@@ -123,8 +123,8 @@ class Trajectory:
             object.__setattr__(self, "mode", a)
 
     def __repr__(self) -> str:
-        return (f"{type(self).__name__}(ground={self.ground!r}, h={self.disk.h:g}, t=[{self.t[0]:g}, "
-                f"{self.t[-1]:g}], n={self.t.size}, status={self.status!r}, "
+        return (f"{type(self).__name__}(ground={self.ground!r}, h={self.disk.h:g}, "
+                f"t=[{self.t[0]:g}, {self.t[-1]:g}], n={self.t.size}, status={self.status!r}, "
                 f"n_steps={self.n_steps})")
 
     @property
