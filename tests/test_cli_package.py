@@ -8,7 +8,6 @@ import argparse
 import json
 import os
 import re
-import signal
 import stat
 import subprocess
 import sys
