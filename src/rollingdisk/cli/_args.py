@@ -18,8 +18,7 @@ from rollingdisk.util.errors import INPUT_ERRORS
 __all__ = ["CLIError", "parse_angle", "real", "integer", "positive_int", "H", "T_END_MAX",
            "SIMULATE_T_END_MAX", "RTOL_RANGE", "add_motion_args", "add_state_arg",
            "add_perturbation_args", "add_tolerance_args", "motion_from_args",
-           "start_from_args", "initial_state", "finite_or_none", "agg", "print_record",
-           "t_end_arg"]
+           "start_from_args", "initial_state", "t_end_arg"]
 
 #: Longest simulated time of ``sweep`` and ``animate`` (many runs; frames sampling one run).
 T_END_MAX = 1e4
@@ -242,26 +241,3 @@ def initial_state(args, layout: str, command: str) -> tuple[list[float], set[str
     y[state_index(layout, "theta")] += args.perturb
     y[state_index(layout, "omega1")] += args.kick
     return y, named
-
-
-def finite_or_none(value):
-    """``value``, or None for a non-finite float (strict JSON)."""
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    return value
-
-
-def agg() -> None:
-    """matplotlib without a display (the command line writes files only)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-
-
-def print_record(record: dict, keys) -> None:
-    """``  key    value`` lines for the keys of ``record`` that are not None."""
-    for key in keys:
-        val = record.get(key)
-        if val is None:
-            continue
-        print(f"  {key:16s} {val:.10g}" if isinstance(val, float) else f"  {key:16s} {val}")

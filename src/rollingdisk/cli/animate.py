@@ -13,11 +13,11 @@ from rollingdisk.cli._args import (
     T_END_MAX,
     add_motion_args,
     add_perturbation_args,
-    agg,
     integer,
     motion_from_args,
     t_end_arg,
 )
+from rollingdisk.cli._format import agg
 from rollingdisk.cli.figures import dpi_arg
 from rollingdisk.model.disk import DEFAULT_H
 

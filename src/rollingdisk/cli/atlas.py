@@ -7,7 +7,8 @@ two simulated steady motions with their animations.
 
 from __future__ import annotations
 
-from rollingdisk.cli._args import H, agg
+from rollingdisk.cli._args import H
+from rollingdisk.cli._format import agg
 from rollingdisk.model.disk import DEFAULT_H
 
 

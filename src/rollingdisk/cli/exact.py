@@ -14,11 +14,11 @@ from rollingdisk.cli._args import (
     add_motion_args,
     add_perturbation_args,
     add_state_arg,
-    finite_or_none,
     initial_state,
     integer,
     start_from_args,
 )
+from rollingdisk.cli._format import finite_or_none
 
 KEYS = ("theta_min", "theta_max", "amplitude", "period", "frequency", "varpi", "delta_psi",
         "delta_phi", "t_end", "theta_end", "E")

@@ -6,7 +6,8 @@
 
 from __future__ import annotations
 
-from rollingdisk.cli._args import agg, integer, real
+from rollingdisk.cli._args import integer, real
+from rollingdisk.cli._format import agg
 
 
 def dpi_arg(p, default: int) -> None:

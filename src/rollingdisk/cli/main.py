@@ -17,9 +17,8 @@ Exit status and messages (every command, the same way):
   (the console script's :mod:`rollingdisk_cli` installs them even before the package is
   imported).
 
-JSON output is strict (no NaN or infinity: ``json.dumps(..., allow_nan=False)``).  Each
-command lives in a module of its own with ``configure(subparsers)`` and ``run(args)``;
-``run`` calls the library and only formats.
+JSON output is strict (``allow_nan=False``).  Each command is a module with
+``configure(subparsers)`` and ``run(args)``, which calls the library and only formats.
 """
 
 from __future__ import annotations
@@ -116,17 +115,6 @@ def _version() -> str:
         return "rollingdisk (version unknown: not installed)"
 
 
-class _VersionAction(argparse.Action):
-    """``--version``: looked up only when asked for."""
-
-    def __init__(self, option_strings, dest, **kw):
-        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS, **kw)
-
-    def __call__(self, parser, namespace, values, option_string=None):
-        print(_version())
-        parser.exit()
-
-
 def _command_module(name: str, module: str):
     try:
         return importlib.import_module(module)
@@ -147,7 +135,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="rollingdisk", description="Dynamics of a rigid disk of finite "
                      "thickness on a horizontal plane (after M. Batista): steady motions, "
                      "stability, simulations, maps.")
-    parser.add_argument("--version", action=_VersionAction,
+    parser.add_argument("--version", action="version", version=_version(),
                         help="print the version of rollingdisk and exit")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     for name, module, text in COMMANDS:

@@ -8,7 +8,8 @@ surface varpi^2 = 0, or simulated stability from a sweep.
 
 from __future__ import annotations
 
-from rollingdisk.cli._args import H, agg
+from rollingdisk.cli._args import H
+from rollingdisk.cli._format import agg
 from rollingdisk.cli.figures import dpi_arg
 from rollingdisk.model.disk import DEFAULT_H
 

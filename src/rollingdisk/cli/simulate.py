@@ -20,14 +20,13 @@ from rollingdisk.cli._args import (
     add_perturbation_args,
     add_state_arg,
     add_tolerance_args,
-    finite_or_none,
     initial_state,
     positive_int,
-    print_record,
     real,
     start_from_args,
     t_end_arg,
 )
+from rollingdisk.cli._format import finite_or_none, print_record
 
 FRICTION = ("mu", "mu_k", "rolling_resistance", "pivot", "air")
 
