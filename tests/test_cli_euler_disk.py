@@ -11,7 +11,8 @@ import json
 import numpy as np
 import pytest
 
-from rollingdisk.cli.main import EULER_DISK_FILES, main
+from rollingdisk.cli.main import main
+from rollingdisk.plotting.reports import EULER_DISK_FILES
 
 SHORT = ["--alpha0", "0.05", "--quiet"]
 

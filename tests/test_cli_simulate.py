@@ -12,7 +12,8 @@ import numpy as np
 import pytest
 
 from rollingdisk import Disk, energy_drift, simulate
-from rollingdisk.cli.main import _ProgressBar, main
+from rollingdisk.cli.main import main
+from rollingdisk.util.progress import ProgressBar as _ProgressBar
 
 STATE = "theta=0.3,omega2=2.0,omega3=0.5"
 COLUMNS = ["t", "X_C", "Y_C", "psi", "theta", "phi", "omega1", "omega2", "omega3", "X_P",

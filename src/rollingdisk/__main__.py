@@ -1,7 +1,7 @@
-"""``python -m rollingdisk``: the command-line interface."""
+"""``python -m rollingdisk``: the command-line interface (signal handlers first)."""
 
 import sys
 
-from rollingdisk.cli.main import main
+from rollingdisk_cli import main
 
 sys.exit(main())

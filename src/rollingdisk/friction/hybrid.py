@@ -346,7 +346,14 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
                            "(the motion became singular)")
                 break
             ta, tb = solver.t_old, solver.t
-            sol = solver.dense_output()
+            try:  # the interpolant evaluates the right-hand side too
+                with np.errstate(all="ignore"):
+                    sol = solver.dense_output()
+            except _Singular as exc:
+                status = "failed"
+                message = (f"the equations became singular at {exc} (a non-finite right-hand "
+                           f"side, theta = {solver.y[5]:.6g} at the step end)")
+                break
             hit = _first_event(run, mode, sol, ta, tb, g_old, h > 0 and guards, guards)
             if hit is None:
                 t, z = tb, solver.y.copy()

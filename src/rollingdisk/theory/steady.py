@@ -259,7 +259,7 @@ def _omega20(ground: str, h, ht, s, c, omega30):
         return (((3.0 + 16.0 * h * h) * p + 12.0 * ht) * omega30 * omega30 - 12.0 * y_P) / (
             6.0 * (3.0 + 2.0 * ht * p) * omega30)
     k1, k2 = _inertia(h)  # eq. (10)
-    return (k1 * p * omega30 * omega30 - y_P) / (k2 * omega30)  # eq. (34)
+    return (k1 * p * omega30 * omega30 - y_P) / k2 / omega30  # eq. (34); k2 omega30 may underflow
 
 
 def _build(disk: Disk, ground: str, theta0: float, Omega0: float) -> SteadyMotion:
@@ -269,6 +269,10 @@ def _build(disk: Disk, ground: str, theta0: float, Omega0: float) -> SteadyMotio
     s, c = math.sin(theta0), math.cos(theta0)
     y_P = s - ht * c  # eq. (16)
     omega30 = Omega0 * c  # eq. (3)
+    if omega30 == 0.0:  # Omega0 so small that omega30 underflows: eqs. (28), (34) divide by it
+        raise NoSteadyMotion(
+            f"Omega0 = {Omega0:.6g} is beyond floating-point range for this steady motion "
+            "(omega30 = Omega0 cos(theta0) underflows to 0): choose 1e-100 < |Omega0| < 1e100")
     omega20 = _omega20(ground, h, ht, s, c, omega30)
     if ground == "rough":
         v_Cx0 = omega20 - ht * omega30  # eq. (18) with v_Px0 = 0

@@ -8,7 +8,12 @@ target, swapped in at the end).  On any exception, ``KeyboardInterrupt`` and
 is removed and the target is left as it was.  :func:`check_writable` refuses a destination
 before the work, not after it.
 
-Permissions follow the umask, as for a file created with ``open``.
+Destinations that are not regular files: a symbolic link is written through (the file it
+points to is replaced, the link stays, as ``cp`` and shell redirection do); a character
+device or a FIFO (``/dev/null``, ``/dev/stdout``, a named pipe) is written directly, never
+replaced by a file.  Permissions follow the umask, as for a file created with ``open``.
+:func:`committed` lists the outputs completed so far, so that an interruption that comes
+after them can say they are whole.
 """
 
 from __future__ import annotations
@@ -18,6 +23,7 @@ import errno
 import os
 import shutil
 import signal
+import stat
 import sys
 import tempfile
 from collections.abc import Iterator
@@ -26,10 +32,33 @@ from pathlib import Path
 from rollingdisk.util.errors import ParameterError
 
 __all__ = ["Terminated", "atomic_file", "atomic_dir", "check_writable",
-           "check_replaceable", "terminate_as_exception", "check_signals", "pending_signal"]
+           "check_replaceable", "terminate_as_exception", "check_signals", "pending_signal",
+           "committed"]
 
 #: Signals received while :func:`terminate_as_exception` is active (see check_signals).
 _PENDING: list[int] = []
+#: Outputs put in place by atomic_file / atomic_dir in this process (see committed).
+_COMMITTED: list[Path] = []
+
+
+def committed() -> tuple[Path, ...]:
+    """The outputs :func:`atomic_file` and :func:`atomic_dir` completed in this process, in
+    order (absolute paths; a device or FIFO written through counts once its writer closed)."""
+    return tuple(_COMMITTED)
+
+
+def _resolve(path) -> Path:
+    """The absolute destination, symbolic links followed (a dangling one: its target)."""
+    return Path(os.path.realpath(os.path.abspath(os.fspath(path))))
+
+
+def _is_stream(target: Path) -> bool:
+    """Whether ``target`` is a character device or a FIFO: written directly, not replaced."""
+    try:
+        mode = os.stat(target).st_mode
+    except OSError:
+        return False
+    return stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)
 
 
 class Terminated(BaseException):  # noqa: N818 - named like KeyboardInterrupt
@@ -115,9 +144,18 @@ def check_writable(path, *, name: str = "out", folder: bool = False) -> Path:
     ------
     ParameterError
         If the parent folder is missing or not writable, the target is of the wrong kind
-        (a folder given for a file or the reverse), or an existing file is read-only.
+        (a folder given for a file or the reverse, a socket or block device), or an
+        existing file is read-only.  A symbolic link is checked as the file it points to;
+        a character device or FIFO must be writable itself.
     """
-    target = Path(os.path.abspath(os.fspath(path)))
+    target = _resolve(path)
+    if not folder and _is_stream(target):
+        if not os.access(target, os.W_OK):
+            raise ParameterError(f"{name}: {target} is not writable")
+        return target
+    if target.exists() and not folder and not (target.is_file() or target.is_dir()):
+        raise ParameterError(f"{name}: {target} is not a regular file, a character device "
+                             "or a FIFO; give a file name")
     parent = target.parent
     if not parent.is_dir():
         raise ParameterError(f"{name}: no such folder: {parent}")
@@ -188,9 +226,18 @@ def atomic_file(path, mode: str = "w", **open_kw) -> Iterator:
 
     Yields an open file object (``mode`` ``"w"``, ``"wb"``, ...).  With ``mode=None`` it
     yields the temporary :class:`~pathlib.Path` instead (for writers that open the file
-    themselves, e.g. ``savefig``; keep the suffix of ``path``).
+    themselves, e.g. ``savefig``; keep the suffix of ``path``).  A symbolic link is
+    written through; a character device or FIFO is opened (or yielded) directly.
     """
-    target = Path(os.path.abspath(os.fspath(path)))
+    target = _resolve(path)
+    if _is_stream(target):
+        if mode is None:
+            yield target
+        else:
+            with open(target, mode, **open_kw) as fh:
+                yield fh
+        _COMMITTED.append(target)
+        return
     fd, tmp = tempfile.mkstemp(prefix=f".{target.stem}.", suffix=f".tmp{target.suffix}",
                                dir=target.parent)
     tmp = Path(tmp)
@@ -204,6 +251,7 @@ def atomic_file(path, mode: str = "w", **open_kw) -> Iterator:
                 yield fh
         check_signals()
         os.replace(tmp, target)
+        _COMMITTED.append(target)
     except BaseException:
         with contextlib.suppress(OSError):
             if mode is None:
@@ -248,15 +296,17 @@ def atomic_dir(path) -> Iterator[Path]:
     Yields the temporary folder to write into.  At the end an existing ``path`` is moved
     aside, the new folder renamed into its place and the old one deleted: readers see
     either the old folder or the new one, never a mixture, and two runs into the same
-    folder leave the whole result of the one that finished last.
+    folder leave the whole result of the one that finished last.  A symbolic link to a
+    folder is written through (the folder it points to is replaced, the link stays).
     """
-    target = Path(os.path.abspath(os.fspath(path)))
+    target = _resolve(path)
     tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent))
     try:
         os.chmod(tmp, 0o777 & ~_umask())
         yield tmp
         check_signals()
         _swap_in(tmp, target)
+        _COMMITTED.append(target)
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise

@@ -1,0 +1,232 @@
+"""``rollingdisk simulate``: integrate the equations of motion from a (perturbed) steady
+motion or any state, on rough, smooth or Coulomb ground.
+
+    $ rollingdisk simulate --h 0.17 --theta0 30deg --Omega0 2 --kick 0.01 --t-end 100
+    $ rollingdisk simulate --h 0.1 --state theta=0.3,omega2=1.5,omega3=0.7 --t-end 50 \\
+          --out run.csv --json
+    $ rollingdisk simulate --ground coulomb --mu 0.3 --h 0.1 --theta0 0.3 --Omega0 2 \\
+          --t-end 20
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+
+from rollingdisk.cli._args import (
+    SIMULATE_T_END_MAX,
+    CLIError,
+    add_motion_args,
+    add_perturbation_args,
+    add_state_arg,
+    add_tolerance_args,
+    initial_state,
+    positive_int,
+    real,
+    start_from_args,
+    t_end_arg,
+)
+from rollingdisk.cli._format import finite_or_none, print_record
+
+FRICTION = ("mu", "mu_k", "rolling_resistance", "pivot", "air")
+
+
+def configure(sub):
+    p = sub.add_parser(
+        "simulate",
+        description="Integrate the equations of motion (eqs. 1-13, 37, 38 / 49) with guard "
+        "events: lift-off (F_z = 0), edge contact (theta = 0 with h > 0), falling flat. "
+        "Start from a steady motion (--theta0 with one of --Omega0, --rC, --rP, or "
+        "--motion straight --omega0 W), optionally perturbed (--perturb adds to theta), "
+        "or from any state (--state theta=0.3,omega2=1.5,omega3=0.7; unnamed components "
+        "are 0). Write negative angles as --theta0=-30deg. On --ground coulomb (friction "
+        "--mu) the disk rolls while friction holds and slides when it cannot; a steady "
+        "motion is the rough-ground one, started rolling.")
+    g = add_motion_args(p, coulomb=True)
+    add_state_arg(g, "an arbitrary initial state by component names (X_C, Y_C, [V_X, V_Y,] "
+                  "psi, theta, phi, omega1, omega2, omega3; angles may have a deg suffix); "
+                  "unnamed components are 0, except on coulomb ground without V_X, V_Y: "
+                  "then the velocity of C is the rolling one (eq. 37)")
+    c = p.add_argument_group("coulomb ground (docs/friction.md)")
+    c.add_argument("--mu", type=real("mu_s", low=0.0), default=None,
+                   help="static friction coefficient mu_s >= 0 (needed for --ground coulomb)")
+    c.add_argument("--mu-k", dest="mu_k", type=real("mu_k", low=0.0), default=None,
+                   help="kinetic coefficient, 0 <= mu_k <= mu_s (default mu_s)")
+    c.add_argument("--rolling-resistance", dest="rolling_resistance",
+                   type=real("rolling_resistance", low=0.0), default=None,
+                   help="rolling-resistance length c: |M_h| = c F_z")
+    c.add_argument("--pivot", type=real("pivot", low=0.0), default=None,
+                   help="pivoting (drilling) friction length c: |M_z| = c F_z")
+    c.add_argument("--air", type=real("air", low=0.0), default=None,
+                   help="air-film drag coefficient (Moffatt's model)")
+    add_perturbation_args(p)
+    t_end_arg(p, high=SIMULATE_T_END_MAX)
+    add_tolerance_args(p)
+    p.add_argument("--method", choices=("dop853", "taylor", "scipy"), default="dop853",
+                   help="rollingdisk's DOP853 (default; compiled once a run is long enough "
+                   "to be worth it), its Taylor-series method (compiled on first use; "
+                   "fastest at tight tolerances) or scipy's DOP853")
+    p.add_argument("--error-control", dest="error_control", choices=("full", "reduced"),
+                   default="full", help="tolerances on the whole state (default) or on "
+                   "(theta, omega1, omega2, omega3) only, the quadratures X_C, Y_C, psi, phi "
+                   "riding along (fewer steps for the same energy drift)")
+    p.add_argument("--max-steps", dest="max_steps", type=positive_int, default=2_000_000,
+                   help="step budget: stop with status step-budget after this many steps "
+                   "(default 2000000, about 20 s)")
+    p.add_argument("--out", type=str, default=None, metavar="FILE.csv",
+                   help="write the trajectory as CSV (t, X_C, Y_C, psi, theta, phi, omega1, "
+                   "omega2, omega3, X_P, Y_P, F_x, F_y, F_z, E; smooth and coulomb ground "
+                   "add V_X, V_Y; coulomb ground adds mode: 0 rolling, 1 sliding)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    return p
+
+
+def run(args) -> int:
+    import rollingdisk as rd
+    from rollingdisk.util.files import check_writable
+
+    disk = rd.Disk(h=args.h)
+    coulomb = _coulomb_ground(args)
+    motion = start_from_args(args, "simulate")
+    if args.out is not None:
+        check_writable(args.out, name="--out")
+    if coulomb is not None:
+        record, transitions = _run_coulomb(args, disk, coulomb, motion)
+        keys = ("t_end", "n_steps", "mode_end", "energy_balance", "theta_min", "theta_max",
+                "wall_time_s")
+    else:
+        record, transitions = _run_ideal(args, disk, motion), []
+        keys = ("t_end", "n_steps", "energy_drift", "theta_min", "theta_max",
+                "theta_frequency", "varpi", "growth_rate", "wall_time_s")
+    if args.out is not None:
+        record["out"] = args.out
+    if args.json:
+        print(json.dumps(record, indent=2, allow_nan=False))
+        return 0
+    print(record["message"])
+    print_record(record, keys)
+    for x in transitions[:20]:
+        print(f"  t = {x['t']:.10g}: {x['from']} -> {x['to']}")
+    if len(transitions) > 20:
+        print(f"  ... {len(transitions) - 20} more transitions")
+    if args.out is not None:
+        print(f"  wrote {args.out}")
+    return 0
+
+
+def _bar(args):
+    from rollingdisk.util.progress import ProgressBar
+
+    return ProgressBar(quiet=args.json)
+
+
+def _run_ideal(args, disk, motion) -> dict:
+    """Rough or smooth ground: stream the run (CSV, measurements) and summarize it."""
+    import rollingdisk as rd
+    from rollingdisk.integrate.measure import compare_with_theory, oscillation_frequency
+    from rollingdisk.integrate.simulation import DEFAULT_ATOL, DEFAULT_RTOL
+    from rollingdisk.integrate.stream import StreamSummary
+    from rollingdisk.util.files import atomic_file
+
+    options = dict(rtol=DEFAULT_RTOL if args.rtol is None else args.rtol,
+                   atol=DEFAULT_ATOL if args.atol is None else args.atol, method=args.method,
+                   max_steps=args.max_steps, error_control=args.error_control)
+    if motion is None:
+        y0, _ = initial_state(args, args.ground, "simulate")
+    bar = _bar(args)
+    csv_cm = (atomic_file(args.out, "w", newline="") if args.out is not None
+              else contextlib.nullcontext())
+    try:
+        with csv_cm as csv:
+            summary = StreamSummary(disk, args.ground, csv)
+            options.update(sink=summary, progress=bar)
+            if motion is not None:
+                traj = rd.simulate_steady(motion, args.t_end, perturb=args.perturb,
+                                          kick=args.kick, **options)
+            else:
+                traj = rd.simulate(disk, args.ground, (0.0, args.t_end), y0, **options)
+    finally:
+        bar.close()
+    kept = summary.kept(traj)
+    stab = None if motion is None else rd.stability(motion)
+    theory = None if stab is None else compare_with_theory(kept, stab)
+    record = {
+        "status": traj.status, "message": traj.message, "ground": traj.ground, "h": disk.h,
+        "t_end": float(traj.t[-1]), "n_steps": traj.n_steps, "n_rhs": traj.n_rhs,
+        "energy_drift": summary.energy_drift(), "theta_min": summary.theta_min,
+        "theta_max": summary.theta_max, "theta_frequency": oscillation_frequency(kept),
+        "varpi": None if stab is None else stab.as_dict()["varpi"],
+        "varpi2": None if stab is None else stab.varpi2,
+        "growth_rate": theory.measured if theory is not None and theory.kind == "growth"
+        else None,
+        "wall_time_s": traj.wall_time, "method": traj.method,
+    }
+    return {k: finite_or_none(v) for k, v in record.items()}
+
+
+def _coulomb_ground(args):
+    """The :class:`~rollingdisk.friction.ground.Coulomb` ground the options ask for, or None."""
+    extra = [f"--{n.replace('_', '-')}" for n in FRICTION if getattr(args, n) is not None]
+    if args.ground != "coulomb":
+        if extra:
+            raise CLIError(f"rollingdisk simulate: {', '.join(extra)} need --ground coulomb")
+        return None
+    if args.mu is None:
+        raise CLIError("rollingdisk simulate: --ground coulomb needs --mu (static friction "
+                       "coefficient, e.g. --mu 0.3)")
+    if args.method != "dop853" or args.error_control != "full":
+        raise CLIError("rollingdisk simulate: --method and --error-control are for rough and "
+                       "smooth ground; coulomb ground has its own hybrid integrator")
+    import rollingdisk as rd
+
+    return rd.Coulomb(args.mu, args.mu_k, rolling_resistance=args.rolling_resistance,
+                      pivot=args.pivot, air=args.air)
+
+
+def _coulomb_state(args, disk, motion) -> list[float]:
+    """The start on Coulomb ground (the smooth layout, with the velocity of C)."""
+    from rollingdisk.friction.coulomb import rolling_state
+    from rollingdisk.model.state import state_index
+
+    if motion is None:
+        y, named = initial_state(args, "smooth", "simulate")
+        if not {"V_X", "V_Y"} & named:  # the rolling velocity of C (eq. 37)
+            return list(rolling_state(disk, [y[0], y[1], *y[4:]]))
+        return y
+    y = list(rolling_state(disk, motion.initial_state()))
+    y[state_index("smooth", "theta")] += args.perturb
+    y[state_index("smooth", "omega1")] += args.kick
+    return y
+
+
+def _run_coulomb(args, disk, ground, motion) -> tuple[dict, list]:
+    """The hybrid rolling/sliding run; the CSV is written last (a failure leaves none)."""
+    from rollingdisk.friction.coulomb import MODE_NAMES
+    from rollingdisk.friction.hybrid import energy_balance, simulate_coulomb
+    from rollingdisk.integrate.stream import write_columns
+    from rollingdisk.util.files import atomic_file
+
+    y0 = _coulomb_state(args, disk, motion)
+    options = {k: getattr(args, k) for k in ("rtol", "atol") if getattr(args, k) is not None}
+    bar = _bar(args)
+    try:
+        traj = simulate_coulomb(disk, ground, (0.0, args.t_end), y0, progress=bar,
+                                max_steps=args.max_steps, **options)
+    finally:
+        bar.close()
+    transitions = [x.as_dict() for x in traj.transitions]
+    record = {
+        "status": traj.status, "message": traj.message, "ground": "coulomb",
+        **{k: v for k, v in ground.as_dict().items() if k != "ground"},
+        "h": disk.h, "t_end": float(traj.t[-1]), "n_steps": traj.n_steps,
+        "mode_end": MODE_NAMES[int(traj.mode[-1])], "transitions": transitions,
+        "energy_balance": energy_balance(traj),
+        "dissipated": {k: float(v[-1]) for k, v in traj.dissipated.items()},
+        "theta_min": float(min(traj.theta)), "theta_max": float(max(traj.theta)),
+        "wall_time_s": traj.wall_time, "method": traj.method,
+    }
+    record = {k: finite_or_none(v) for k, v in record.items()}
+    if args.out is not None:
+        with atomic_file(args.out, "w", newline="") as csv:
+            write_columns(csv, traj.as_columns())
+    return record, transitions
