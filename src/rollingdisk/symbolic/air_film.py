@@ -327,12 +327,13 @@ class DecayLaw:
     q: sp.Expr
 
 
-def decay_law(K=None, w=4, e1=sp.Rational(3, 2)) -> DecayLaw:
+def decay_law(K=None, w=4, e1=None) -> DecayLaw:
     """Integrate the energy balance with ``Phi = K mu a^3 Omega^2/alpha`` (sympy).
 
     Defaults: thin disk (``w = 4``, ``e1 = 3/2`` from :func:`disk_kinematics`), ``K``
     symbolic.  ``t0 = e1 alpha0^3 M / (3 K w mu a)``."""
     K = sp.Symbol("K", positive=True) if K is None else K
+    e1 = sp.Rational(3, 2) if e1 is None else e1
     tau, al0, A = sp.symbols("tau alpha0 A", positive=True)
     Om2 = w * g / (a * A)
     # e1 M g a dalpha/dtau = Phi (tau = t0 - t runs backwards); separate the variables
