@@ -151,8 +151,8 @@ def test_dissipation_by_independent_quadrature():
     face-by-face quadrature of h^3 |grad p|^2/(12 mu), at a random state (Richardson on two
     grids; the singular contact point makes the scheme first order): 0.5 %."""
     a_, al, Om, mu_ = RNG.uniform(0.01, 0.1), RNG.uniform(1e-3, 0.05), RNG.uniform(10, 300), 1.8e-5
-    coarse = _fv_reynolds(a_, al, Om, mu_, 32, 80)
-    fine = _fv_reynolds(a_, al, Om, mu_, 64, 160)
+    coarse = _fv_reynolds(a_, al, Om, mu_, 40, 96)
+    fine = _fv_reynolds(a_, al, Om, mu_, 80, 192)
     phi = 2 * fine - coarse
     K = af.film_constant()[0]
     assert phi == pytest.approx(K * mu_ * a_**3 * Om**2 / al, rel=5e-3)
