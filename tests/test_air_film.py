@@ -20,7 +20,7 @@ from hypothesis import strategies as st
 from scipy import integrate
 
 import rollingdisk as rd
-from rollingdisk import air_models as am
+from rollingdisk.friction import air_models as am
 from rollingdisk.symbolic import air_film as af
 
 RNG = np.random.default_rng(22)
@@ -146,6 +146,7 @@ def _fv_reynolds(a_, alpha_, Omega_, mu_, Nr, Nt):
     return E / (12 * mu_)
 
 
+@pytest.mark.slow
 def test_dissipation_by_independent_quadrature():
     """The derived Phi = K mu a^3 Omega^2 / alpha against the finite-volume solution's
     face-by-face quadrature of h^3 |grad p|^2/(12 mu), at a random state (Richardson on two

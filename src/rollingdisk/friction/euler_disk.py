@@ -47,6 +47,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rollingdisk.friction import coulomb as _cl
+from rollingdisk.friction.air_models import air_coefficient_derived
 from rollingdisk.model.disk import STANDARD_GRAVITY, Disk
 from rollingdisk.model.geometry import _geometry, _inertia
 from rollingdisk.model.outcomes import AT_REST, EDGE_CONTACT, FELL_FLAT, LIFT_OFF, names
@@ -184,12 +185,15 @@ class EulerDisk:
 
     @property
     def c_air(self) -> float:
-        """Air-drag coefficient of :class:`rollingdisk.AirDrag`, ``2 pi mu_air a^(3/2) /
-        (m g^(1/2))`` (Moffatt's ``Phi = 2 pi mu_air a^3 Omega^2/alpha``); 0 without air."""
+        """Air-drag coefficient of :class:`rollingdisk.AirDrag`, ``K mu_air a^(3/2) /
+        (m g^(1/2))`` with ``K`` = 1.28113, the squeeze film under the disk solved from the
+        Reynolds equation (:data:`rollingdisk.friction.air_models.FILM_CONSTANT`); Moffatt's
+        shear estimate ``K = 2 pi`` is 4.90 times larger (``docs/errata-models.md``).  0
+        without air."""
         if not self.air_viscosity:
             return 0.0
-        return 2.0 * math.pi * self.air_viscosity * self.radius ** 1.5 / (
-            self.mass * math.sqrt(self.gravity))
+        return air_coefficient_derived(self.air_viscosity, self.radius, self.mass,
+                                       self.gravity)
 
     def as_dict(self) -> dict:
         """The parameters, plus ``h``, ``time_unit_s`` and ``c_air``."""

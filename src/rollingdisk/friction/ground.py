@@ -166,14 +166,17 @@ class AirDrag:
     ``-c omega3^2 / cos^3(theta) = -c Omega^2 / cos(theta) <= 0`` (``omega3 = Omega cos
     theta``, eq. 3).  Near the end of Euler's disk the tilt ``alpha = pi/2 - |theta|`` is
     small and ``cos(theta) = sin(alpha) ~ alpha``: the power is ``-c Omega^2 / alpha``,
-    Moffatt's dissipation ``Phi = 2 pi mu_air a^3 Omega^2 / alpha`` in the air gap of
-    thickness ``a alpha`` sheared at speed ``a Omega``.  Hence ``c = 2 pi mu_air a^(3/2) /
-    (m g^(1/2))`` in the library's units (``mu_air ~ 1.8e-5 Pa s``): ``c`` is a moment per
-    angular speed, in units of ``m g a / sqrt(g/a) = m a^(3/2) g^(1/2)``.  Independent of
-    ``F_z``.
+    the dissipation ``Phi = K mu_air a^3 Omega^2 / alpha`` of the squeeze film under the
+    disk, ``K`` = 1.28113 from the Reynolds equation solved exactly
+    (:mod:`rollingdisk.symbolic.air_film`; Moffatt estimated ``K = 2 pi``, a gap of
+    thickness ``a alpha`` sheared at ``a Omega``, 4.90 times too large:
+    ``docs/errata-models.md``).  Hence ``c = K mu_air a^(3/2) / (m g^(1/2))`` in the
+    library's units (``mu_air ~ 1.8e-5 Pa s``; :func:`.air_models.air_coefficient_derived`):
+    ``c`` is a moment per angular speed, in units of ``m g a / sqrt(g/a) = m a^(3/2)
+    g^(1/2)``.  Independent of ``F_z``.
 
     Source: H. K. Moffatt, "Euler's disk and its finite-time singularity", Nature 404
-    (2000) 833 (with rolling, ``Omega^2 alpha ~ g/a`` and ``E ~ (3/2) m g a alpha``, it
+    (2000) 833 (with rolling, ``Omega^2 alpha = 4 g/a`` and ``E ~ (3/2) m g a alpha``, it
     predicts ``alpha ~ (t0 - t)^(1/3)``, ``Omega ~ (t0 - t)^(-1/6)``).  The form away from
     small ``alpha`` (the ``omega3`` moment and ``1/cos^3``) is this library's choice, see
     ``docs/friction.md``.

@@ -27,7 +27,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-import rollingdisk as rd
+from rollingdisk.friction.ground import angular_velocity_xyz
+from rollingdisk.util.checks import check_real
 
 __all__ = ["BoundaryLayerAirDrag", "LoadRollingResistance", "air_coefficient_derived",
            "FILM_CONSTANT", "MOFFATT_CONSTANT", "BOUNDARY_LAYER_CONSTANT"]
@@ -44,7 +45,7 @@ BOUNDARY_LAYER_CONSTANT = math.pi
 
 
 def _positive(name, value, *, low_open=True):
-    return rd.check_real(name, value, low=0.0, low_open=low_open)
+    return check_real(name, value, low=0.0, low_open=low_open)
 
 
 def air_coefficient_derived(mu_air: float, radius: float, mass: float,
@@ -110,7 +111,7 @@ class BoundaryLayerAirDrag:
     c: float
 
     def __post_init__(self):
-        object.__setattr__(self, "c", rd.check_real("boundary_layer_air", self.c, low=0.0))
+        object.__setattr__(self, "c", check_real("boundary_layer_air", self.c, low=0.0))
 
     @classmethod
     def from_si(cls, mu_air: float = 1.81e-5, rho_air: float = 1.2, radius: float = 0.0375,
@@ -194,8 +195,8 @@ class LoadRollingResistance:
     n: float = 1.0
 
     def __post_init__(self):
-        object.__setattr__(self, "c", rd.check_real("rolling_resistance", self.c, low=0.0))
-        object.__setattr__(self, "n", rd.check_real("n", self.n, low=0.0, high=1.0,
+        object.__setattr__(self, "c", check_real("rolling_resistance", self.c, low=0.0))
+        object.__setattr__(self, "n", check_real("n", self.n, low=0.0, high=1.0,
                                                     low_open=True))
 
     @classmethod
@@ -203,8 +204,8 @@ class LoadRollingResistance:
                 gravity: float = 9.81) -> LoadRollingResistance:
         """From the SI law ``M = c_si F^n`` (``M`` [N m], ``F`` [N], ``c_si`` [N^(1-n) m]):
         ``c = c_si (m g)^(n - 1) / a``."""
-        c_si = rd.check_real("c_si", c_si, low=0.0)
-        n = rd.check_real("n", n, low=0.0, high=1.0, low_open=True)
+        c_si = check_real("c_si", c_si, low=0.0)
+        n = check_real("n", n, low=0.0, high=1.0, low_open=True)
         a = _positive("radius", radius)
         W = _positive("mass", mass) * _positive("gravity", gravity)
         return cls(c_si * W ** (n - 1.0) / a, n)
@@ -214,12 +215,12 @@ class LoadRollingResistance:
 
     def moment(self, theta, omega1, omega2, omega3, F_z):
         """``(M_x, M_y, M_z)`` in Cxyz, units of ``m g a``."""
-        wx, wy, wz = rd.angular_velocity_xyz(theta, omega1, omega2, omega3)
+        wx, wy, wz = angular_velocity_xyz(theta, omega1, omega2, omega3)
         nh = np.hypot(wx, wy)
         k = np.where(nh > 0, -self.c * self._load(F_z) / np.where(nh > 0, nh, 1.0), 0.0)
         return (k * wx)[()], (k * wy)[()], (0.0 * k)[()]
 
     def power(self, theta, omega1, omega2, omega3, F_z):
         """``omega . M = -c max(F_z, 0)^n |omega_h| <= 0``."""
-        wx, wy, wz = rd.angular_velocity_xyz(theta, omega1, omega2, omega3)
+        wx, wy, wz = angular_velocity_xyz(theta, omega1, omega2, omega3)
         return np.asarray(-self.c * self._load(F_z) * np.hypot(wx, wy))[()]
