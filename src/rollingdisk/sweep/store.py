@@ -266,7 +266,6 @@ def describe(ds):
             values, meanings = flags[name]
             var.attrs["flag_values"] = np.array(values, dtype=var.dtype)
             var.attrs["flag_meanings"] = " ".join(m.replace("-", "_") for m in meanings)
-            del var.attrs["units"]  # CF: a flag variable has no units
     return ds
 
 
