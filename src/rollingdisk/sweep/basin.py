@@ -52,7 +52,7 @@ def basin_sweep(grid: SweepGrid, t_end: float, *, kick_max: float = 1.0, rounds:
         and the closed-form ``varpi2``, ``stable``, with CF attributes; attribute
         ``n_computed``: the trajectories this call integrated.
     """
-    if executor == "dask":
+    if isinstance(executor, str) and executor == "dask":
         raise ParameterError("executor: basin_sweep runs its rounds on 'serial' or "
                              "'threads'; 'dask' is not supported (use run_sweep for Dask)")
     opts = check_run_options(grid, t_end, out=out, executor=executor, workers=workers,
