@@ -9,7 +9,7 @@ import pytest
 import rollingdisk as rd
 from rollingdisk.util.errors import ParameterError
 
-sweep = pytest.importorskip("rollingdisk.sweep.runner")
+sweep = pytest.importorskip("rollingdisk.sweep")
 
 
 def _small(ground="rough"):
@@ -182,9 +182,10 @@ def test_grid_setup_is_steady_motion_and_stability_point_by_point(ground, second
 
     g = sweep.SweepGrid(ground, h=(0.0, 0.17), theta0=np.linspace(-1.4, 1.4, 9),
                         **{second: np.linspace(-6.0, 6.0, 9)})
-    spec = sweep._Spec(g, sweep.Perturbation(kick=2e-3, tilt=1e-3), 10.0, 1e-9, 1e-9, 1000,
-                       64, 162)
-    x0, h, th, varpi2, stable, a0 = sweep._setup(spec, 0, spec.n)
+    from rollingdisk.sweep.grid import _setup, _Spec
+
+    spec = _Spec(g, sweep.Perturbation(kick=2e-3, tilt=1e-3), 10.0, 1e-9, 1e-9, 1000, 64, 162)
+    x0, h, th, varpi2, stable, a0 = _setup(spec, 0, spec.n)
     vals = np.asarray(getattr(g, second))
     for j, (ih, it, iv) in enumerate(np.ndindex(g.shape)):
         hh, t0, v = g.h[ih], g.theta0[it], vals[iv]

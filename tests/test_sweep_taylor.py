@@ -18,7 +18,7 @@ from scipy.integrate import solve_ivp
 import rollingdisk as rd
 from rollingdisk.model import equations as eq
 
-sweep = pytest.importorskip("rollingdisk.sweep.runner")
+sweep = pytest.importorskip("rollingdisk.sweep")
 
 
 @pytest.fixture(scope="module")

@@ -1,0 +1,328 @@
+"""A sweep's stores: the resumable partial folder (one writer at a time), the dataset built
+from its records with CF-style attributes, and the finished Zarr store or NetCDF file.
+
+``OUT.partial/`` holds ``lock`` (the writer's lock and pid), a key file (``spec.json`` of
+a sweep, ``basin.json`` of a basin sweep) and the finished records (``chunk_NNNNNN.npz``,
+``round_NNN.npz``), each written under a temporary name and renamed: that rename is the
+record's completion mark.  Only the process that holds the lock reads, resets or writes
+the folder, so two runs into one ``out`` never mix their records: the second is refused
+while the first runs.  The lock is an exclusive ``fcntl.flock`` on ``lock`` (released by
+the kernel when its process dies, however it dies); where ``fcntl`` is missing the file's
+existence is the lock and the pid written in it lets a later run take over the lock of a
+dead process (on POSIX).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import shutil
+from collections.abc import Iterator
+from dataclasses import asdict
+from pathlib import Path
+
+import numpy as np
+
+from rollingdisk.model.outcomes import outcome
+from rollingdisk.sweep.grid import BOUND_FACTOR, GROW_HI, GROW_LO, _Spec
+from rollingdisk.util.errors import ParameterError, ParameterTypeError
+
+try:
+    import fcntl
+except ImportError:  # pragma: no cover - not POSIX
+    fcntl = None
+
+__all__ = ["open_sweep", "check_out", "partial_store", "PartialStore", "describe"]
+
+#: The name of the lock file in a partial folder.
+LOCK = "lock"
+
+
+def check_out(out) -> Path:
+    """``out`` as a Path ending in ``.zarr`` or ``.nc`` in an existing folder."""
+    try:
+        out = Path(os.fspath(out))
+    except TypeError:
+        raise ParameterTypeError(f"out must be a path ending in .zarr or .nc, got "
+                                 f"{type(out).__name__} {out!r}") from None
+    if out.suffix not in (".zarr", ".nc"):
+        raise ParameterError(f"out must end in .zarr or .nc, got {str(out)!r}")
+    if not out.parent.is_dir():
+        raise ParameterError(f"out: folder {str(out.parent)!r} does not exist")
+    return out
+
+
+# ------------------------------------------------------------------------------ lock
+def _busy(folder: Path, pid: int | None) -> ParameterError:
+    who = f"pid {pid}" if pid is not None else "pid unknown"
+    return ParameterError(
+        f"out: {folder} is being written by another process ({who}); wait for it to "
+        f"finish or choose another out (if no such process runs, delete {folder / LOCK})")
+
+
+def _read_pid(path: Path) -> int | None:
+    try:
+        return int(path.read_text().split()[0])
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def _pid_alive(pid: int) -> bool:
+    if os.name != "posix":  # no safe probe: never take over
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # alive, another user's
+        return True
+    return True
+
+
+def _try_flock(path: Path) -> int | None:
+    """The fd of ``path`` locked exclusively, None if it vanished meanwhile; raises
+    BlockingIOError if another process holds it."""
+    fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        # the previous owner may have removed the file between our open and our lock
+        if os.stat(path).st_ino == os.fstat(fd).st_ino:
+            return fd
+    except FileNotFoundError:
+        pass
+    except BaseException:
+        os.close(fd)
+        raise
+    os.close(fd)
+    return None
+
+
+def _try_pidfile(path: Path) -> int | None:
+    """The fd of a newly created ``path``, None after removing a dead owner's; raises
+    BlockingIOError if a live process owns it."""
+    try:
+        return os.open(path, os.O_RDWR | os.O_CREAT | os.O_EXCL, 0o666)
+    except FileExistsError:
+        pid = _read_pid(path)
+        if pid is None or _pid_alive(pid):
+            raise BlockingIOError from None
+        with contextlib.suppress(FileNotFoundError):  # a dead owner's: take it over
+            path.unlink()
+        return None
+
+
+def _lock(folder: Path) -> int:
+    """Lock ``folder`` (created if missing) for this process; an open fd of its lock file.
+
+    Raises :class:`ParameterError` naming the owner's pid if another process holds it."""
+    path = folder / LOCK
+    for _ in range(20):
+        folder.mkdir(exist_ok=True)
+        try:
+            fd = _try_flock(path) if fcntl is not None else _try_pidfile(path)
+        except BlockingIOError:
+            raise _busy(folder, _read_pid(path)) from None
+        except FileNotFoundError:  # the folder went away meanwhile
+            continue
+        if fd is not None:
+            os.ftruncate(fd, 0)
+            os.write(fd, f"{os.getpid()}\n".encode())
+            return fd
+    raise _busy(folder, _read_pid(path))
+
+
+def _unlock(folder: Path, fd: int) -> None:
+    with contextlib.suppress(FileNotFoundError):
+        (folder / LOCK).unlink()
+    os.close(fd)
+
+
+# --------------------------------------------------------------------- partial store
+class PartialStore:
+    """The records of an unfinished run in ``OUT.partial/``, for the lock's holder."""
+
+    def __init__(self, folder: Path, key: str):
+        self.folder = folder
+        self.key = key
+
+    def done(self, prefix: str) -> list[int]:
+        """Indices of the finished records ``prefix_NNN.npz``, sorted."""
+        return sorted(int(p.stem[len(prefix) + 1:]) for p in self.folder.glob(f"{prefix}_*.npz"))
+
+    def _path(self, prefix: str, k: int) -> Path:
+        width = 6 if prefix == "chunk" else 3
+        return self.folder / f"{prefix}_{k:0{width}d}.npz"
+
+    def write(self, prefix: str, k: int, arrays: dict) -> None:
+        """Record ``arrays`` (with the key they belong to) as ``prefix_k``."""
+        target = self._path(prefix, k)
+        tmp = self.folder / f".{target.name}.tmp"
+        with open(tmp, "wb") as fh:
+            np.savez(fh, _key=np.array(self.key), **arrays)
+        os.replace(tmp, target)  # the record's completion mark
+
+    def load(self, prefix: str, k: int) -> dict:
+        """The arrays of record ``prefix_k``; refuses one written for another key."""
+        with np.load(self._path(prefix, k)) as z:
+            arrays = {name: z[name] for name in z.files}
+        if str(arrays.pop("_key", "")) != self.key:
+            raise ParameterError(f"out: {self._path(prefix, k)} was written by a different "
+                                 f"run; delete {self.folder} and run again")
+        return arrays
+
+    def _reset(self, key_file: str) -> None:
+        """Empty the folder (all but the lock) and write the key."""
+        for p in self.folder.iterdir():
+            if p.name == LOCK:
+                continue
+            if p.is_dir() and not p.is_symlink():
+                shutil.rmtree(p)
+            else:
+                p.unlink()
+        (self.folder / key_file).write_text(self.key)
+
+
+@contextlib.contextmanager
+def partial_store(out: Path, key: str, key_file: str) -> Iterator[PartialStore]:
+    """Lock ``OUT.partial`` and yield it as a :class:`PartialStore` for ``key``.
+
+    A folder left by a run with another key is emptied first.  On success the folder is
+    removed; on an exception it is kept when it holds finished records (a rerun resumes
+    from them) and removed otherwise.  The lock is released in every case."""
+    folder = out.with_name(out.name + ".partial")
+    fd = _lock(folder)
+    store = PartialStore(folder, key)
+    keep = False
+    try:
+        try:
+            old = (folder / key_file).read_text()
+        except OSError:
+            old = None
+        if old != key:
+            store._reset(key_file)
+        yield store
+    except BaseException:
+        keep = bool(list(folder.glob("*.npz")))  # finished records: a rerun resumes
+        raise
+    finally:
+        if not keep:
+            shutil.rmtree(folder, ignore_errors=True)  # the lock file with it
+        _unlock(folder, fd)
+
+
+# --------------------------------------------------------------------------- dataset
+_T = "sqrt(a/g)"  # the paper's time unit
+_W = f"rad/{_T}"  # an angular velocity
+#: (long_name, units) of every variable and coordinate a sweep writes.
+ATTRS = {
+    "h": ("half-thickness h", "a"),
+    "theta0": ("steady tilt theta0", "rad"),
+    "omega30": ("steady spin omega30", _W),
+    "Omega0": ("steady turning rate Omega0", _W),
+    "omega0": ("rolling rate omega0", _W),
+    "r_C": ("radius r_C of the circle of C", "a"),
+    "theta_init": ("initial tilt theta", "rad"),
+    "kick": ("kick in omega1", _W),
+    "tilt": ("tilt added to theta0", "rad"),
+    "varpi2": ("varpi^2 (closed form)", "g/a"),  # 1/(time unit)^2
+    "stable": ("stable (closed form)", "1"),
+    "status": ("how the run ended", "1"),
+    "t_end": ("time reached", _T),
+    "max_dtheta": ("max |theta - theta0|", "rad"),
+    "frequency": ("oscillation frequency", _W),
+    "growth_rate": ("envelope growth rate", f"1/{_T}"),
+    "energy_drift": ("relative energy drift", "1"),
+    "n_crossings": ("upward crossings of theta0", "1"),
+    "n_steps": ("accepted steps", "1"),
+    "stable_simulated": ("bounded (simulated)", "1"),
+    "amplitude0": ("initial amplitude |tilt| + |kick|", "1"),
+    "kick_basin": ("largest bounded kick in omega1", _W),
+}
+#: CF flags of the integer variables: (values, names).  -1: no steady motion.
+_NO_MOTION = outcome("no-steady-motion")
+FLAGS = {
+    "stable": ((-1, 0, 1), (_NO_MOTION.name, "unstable", "stable")),
+    "stable_simulated": ((-1, 0, 1), (_NO_MOTION.name, "unbounded", "bounded")),
+}
+
+
+def _status_flags():
+    from rollingdisk.integrate.batch import STATUS_NAMES
+
+    codes = (_NO_MOTION.code, *sorted(STATUS_NAMES))
+    return codes, tuple(outcome(c).name for c in codes)
+
+
+def describe(ds):
+    """Give every variable and coordinate of ``ds`` its CF ``long_name`` and ``units``
+    (:data:`ATTRS`) and the integer variables their ``flag_values`` / ``flag_meanings``
+    (names from :mod:`rollingdisk.model.outcomes`, ``-`` written ``_``); returns ``ds``."""
+    flags = dict(FLAGS, status=_status_flags())
+    for name, var in ds.variables.items():
+        if name in ATTRS:
+            var.attrs["long_name"], var.attrs["units"] = ATTRS[name]
+        if name in flags:
+            values, meanings = flags[name]
+            var.attrs["flag_values"] = np.array(values, dtype=var.dtype)
+            var.attrs["flag_meanings"] = " ".join(m.replace("-", "_") for m in meanings)
+    return ds
+
+
+def build_dataset(spec: _Spec, cols: dict, executor: str, n_computed: int):
+    """The sweep's ``xarray.Dataset`` from its concatenated columns, described."""
+    from importlib.metadata import version
+
+    import xarray as xr
+
+    g = spec.grid
+    p = spec.perturbation
+    dims = (*g.dims, "amplitude")
+    shape = (*g.shape, len(p.kick))
+    coords = g.coords()
+    coords["kick"] = ("amplitude", list(p.kick))
+    coords["tilt"] = ("amplitude", list(p.tilt))
+    data = {k: (dims, np.asarray(v).reshape(shape)) for k, v in cols.items()}
+    ds = xr.Dataset(data, coords=coords)
+    codes, names = _status_flags()
+    ds.attrs.update({
+        "ground": g.ground, "h": json.dumps(list(g.h)), "rtol": spec.rtol, "atol": spec.atol,
+        "t_end_requested": spec.t_end, "max_steps": spec.max_steps, "method": spec.method,
+        "rollingdisk_version": version("rollingdisk"), "executor": executor,
+        "spec": spec.to_json(), "perturbation": json.dumps(asdict(p)),
+        "n_computed": n_computed, "time_unit": "sqrt(a/g) (a: radius, g: gravity)",
+        "status_codes": json.dumps({str(c): m for c, m in zip(codes, names)}),
+        "rules": (f"stable_simulated: completed and max_dtheta <= {BOUND_FACTOR} * "
+                  f"(|tilt| + |kick|); growth_rate: ln({GROW_HI}/{GROW_LO})/(t_hi - t_lo); "
+                  "frequency: 2 pi / least-squares period of upward crossings; -1 = none"),
+    })
+    return describe(ds)
+
+
+def save(ds, out: Path) -> None:
+    """Write ``ds`` to ``out`` (NetCDF or Zarr with consolidated metadata), atomically."""
+    from rollingdisk.util.files import atomic_dir, atomic_file
+
+    if out.suffix == ".nc":
+        with atomic_file(out, mode=None) as tmp:
+            ds.to_netcdf(tmp)
+    else:
+        import zarr
+
+        # Zarr format 2: its consolidated metadata is part of the spec (zarr 3 warns that
+        # format 3's is not), and every Zarr reader opens it
+        fmt = {"zarr_format": 2} if int(zarr.__version__.split(".")[0]) >= 3 else {}
+        with atomic_dir(out) as tmp:
+            ds.to_zarr(tmp, mode="w", consolidated=True, **fmt)
+
+
+def open_sweep(path):
+    """Open a finished sweep store (``.zarr`` or ``.nc``) as an ``xarray.Dataset``."""
+    import xarray as xr
+
+    path = Path(os.fspath(path))
+    if not path.exists():
+        raise ParameterError(f"path: no sweep at {str(path)!r}")
+    if path.suffix == ".nc":
+        return xr.load_dataset(path)
+    return xr.open_zarr(path).load()
