@@ -16,6 +16,7 @@ from collections.abc import Callable, Iterator
 
 import numpy as np
 
+from rollingdisk.model.geometry import _inertia
 from rollingdisk.model.outcomes import outcome
 from rollingdisk.sweep.grid import BOUND_FACTOR, GROW_HI, GROW_LO, _setup, _Spec
 from rollingdisk.util.errors import ParameterError
@@ -40,7 +41,7 @@ def _kernel(method, rough, h, x0, theta_ref, a0, t_end, rtol, atol, max_steps):
     from rollingdisk.integrate import batch as core
     from rollingdisk.integrate.taylor import taylor_order
 
-    k1 = 0.25 + h ** 2 / 3.0  # eq. (10), as Disk.k1_sq
+    k1 = _inertia(h)[0]  # eq. (10)
     k2 = np.full(k1.shape, 0.5)
     args = (rough, h, k1, k2, np.ascontiguousarray(x0), theta_ref, a0, GROW_LO, GROW_HI,
             t_end, rtol, atol, max_steps)
