@@ -30,6 +30,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from rollingdisk.model.disk import Disk, check_ground
+from rollingdisk.model.geometry import _inertia
 from rollingdisk.model.state import state_index, state_names
 from rollingdisk.util.checks import check_real
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
@@ -73,11 +74,6 @@ def _as_free_state(state, name: str = "state") -> np.ndarray:
     if not np.all(np.isfinite(s)):
         raise ParameterError(f"{name} must be finite (no NaN or infinity)")
     return s
-
-
-def _inertia(h: float) -> tuple[float, float]:
-    """``(k1^2, k2^2)``: about a diameter and about the axis eta (eq. 10, m = a = 1)."""
-    return 0.25 + h * h / 3.0, 0.5
 
 
 def _rot_z(a):
