@@ -93,7 +93,7 @@ def configure(sub):
 
 
 def _grid(args):
-    from rollingdisk.sweep.runner import SweepGrid
+    from rollingdisk.sweep import SweepGrid
 
     if args.omega0 is not None and args.theta0 is not None:
         raise CLIError("rollingdisk sweep: error: --omega0 (straight lines) fixes theta0 = "
@@ -108,7 +108,7 @@ def _grid(args):
 
 
 def run(args) -> int:
-    from rollingdisk.sweep.runner import Perturbation, basin_sweep, run_sweep
+    from rollingdisk.sweep import Perturbation, basin_sweep, run_sweep
     from rollingdisk.sweep.summary import stability_agreement
     from rollingdisk.util.progress import ProgressBar
 
@@ -118,10 +118,10 @@ def run(args) -> int:
     bar = ProgressBar(label="sweep", delay=0.0, interval=0.5, quiet=args.json)
     try:
         if args.basin:
-            ds = basin_sweep(grid, args.t_end, kick_max=args.kick or 1.0, rounds=args.rounds,
-                             out=args.out, executor="serial" if executor == "serial" else
-                             "threads", workers=args.workers, chunk=args.chunk,
-                             method=args.method, progress=bar)
+            ds = basin_sweep(grid, args.t_end, kick_max=1.0 if args.kick is None else args.kick,
+                             rounds=args.rounds, out=args.out, executor=executor,
+                             workers=args.workers, chunk=args.chunk, method=args.method,
+                             progress=bar)
             n = int(ds.kick_basin.size) * (args.rounds + 1)
         else:
             kick = args.kick if args.kick is not None else (0.0 if args.perturb else 1e-3)
@@ -135,8 +135,9 @@ def run(args) -> int:
         bar.close()
     wall = time.perf_counter() - start
     agree = None if args.basin else stability_agreement(ds)
-    rate = n / wall if wall > 0 else None
-    rec = {"n": n, "wall_time_s": wall, "trajectories_per_s": rate, "agreement": agree,
+    computed = int(ds.attrs.get("n_computed", n))  # a resumed sweep computed only the rest
+    rate = computed / wall if wall > 0 else None
+    rec = {"n": n, "n_computed": computed, "wall_time_s": wall, "trajectories_per_s": rate, "agreement": agree,
            "out": args.out}
     if args.json:
         print(json.dumps(rec, allow_nan=False))
