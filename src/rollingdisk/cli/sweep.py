@@ -137,8 +137,8 @@ def run(args) -> int:
     agree = None if args.basin else stability_agreement(ds)
     computed = int(ds.attrs.get("n_computed", n))  # a resumed sweep computed only the rest
     rate = computed / wall if wall > 0 else None
-    rec = {"n": n, "n_computed": computed, "wall_time_s": wall, "trajectories_per_s": rate, "agreement": agree,
-           "out": args.out}
+    rec = {"n": n, "n_computed": computed, "wall_time_s": wall, "trajectories_per_s": rate,
+           "agreement": agree, "out": args.out}
     if args.json:
         print(json.dumps(rec, allow_nan=False))
     else:

@@ -1,5 +1,5 @@
 """Contact moments beyond Moffatt's film: Bildsten's boundary layer and load-dependent rolling
-resistance (issue 22), plus the air-film coefficient derived from lubrication theory.
+resistance, plus the air-film coefficient derived from lubrication theory.
 
 Same interface as the moment models of :mod:`rollingdisk.ground` (frozen dataclasses with
 ``moment(theta, omega1, omega2, omega3, F_z)`` in Cxyz and ``power(...) <= 0``), in the

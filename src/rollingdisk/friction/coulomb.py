@@ -20,7 +20,7 @@ __all__ = ["COULOMB_STATE", "MODE_NAMES", "coulomb_rhs", "coulomb_contact", "cou
 
 
 # =======================================================================================
-# Coulomb ground: rolling and sliding modes with friction and contact moments (issue 10)
+# Coulomb ground: rolling and sliding modes with friction and contact moments
 # =======================================================================================
 # Derived in rollingdisk.symbolic.coulomb and checked against it by tests/test_coulomb_eqs.py.
 # State: the smooth one, y = [X_C, Y_C, V_X, V_Y, psi, theta, phi, omega1, omega2, omega3],

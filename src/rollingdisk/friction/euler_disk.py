@@ -1,4 +1,4 @@
-"""Euler's disk, end to end: the toy spun up and run to its end with dissipation on (issue 10).
+"""Euler's disk, end to end: the toy spun up and run to its end with dissipation on.
 
 The toy (a thick steel disk on a mirror base) starts on its spin-in-place steady motion
 (section 3.2.1 with ``r_C = 0``) at the tilt ``alpha0 = pi/2 - |theta0|`` and runs until it

@@ -1,4 +1,4 @@
-"""Parameter sweeps: many perturbed steady motions, integrated in batches (issue 12).
+"""Parameter sweeps: many perturbed steady motions, integrated in batches.
 
 A sweep integrates the reduced system ``(theta, omega1, omega2, omega3)`` (eq. 2 with
 eq. 38 on rough / eq. 49 on smooth ground) from a perturbed steady circle at every point of

@@ -1,4 +1,4 @@
-"""The air film under Euler's disk, derived from lubrication theory (issue 22).
+"""The air film under Euler's disk, derived from lubrication theory.
 
 Outside the numeric core (sympy; scipy for the one quadrature).  Each step is a function
 that returns its sympy result, so the tests can substitute back:

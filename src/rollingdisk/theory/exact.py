@@ -1,4 +1,4 @@
-"""Exact motions by quadrature: the integrable disk at finite amplitude (issue 11).
+"""Exact motions by quadrature: the integrable disk at finite amplitude.
 
 On both ideal grounds the reduced system (theta, omega1, omega2, omega3) of eq. (38)
 (rough) or (49) (smooth) has ``d omega2/dt`` and ``d omega3/dt`` proportional to
@@ -245,7 +245,7 @@ class ExactMotion:
                 "drift": None if self.drift is None else list(self.drift),
                 "t_end": self.t_end, "theta_end": self.theta_end}
 
-    # -- SI view and notebooks (issue 19) ----------------------------------------------
+    # -- SI view and notebooks ----------------------------------------------
     _KINDS = {"h": "dimensionless", "E": "energy", "theta_min": "angle",
               "theta_max": "angle", "amplitude": "angle", "period": "time",
               "frequency": "angular_speed", "delta_psi": "angle", "delta_phi": "angle",
