@@ -31,7 +31,9 @@ How the quadratures are done
    (``u`` from 0 to 2 pi) the integrand is periodic and analytic, so the trapezoidal rule
    (an FFT) converges exponentially.  ``t(u)``, ``psi(u)``, ``phi(u)`` and the centre's
    path ``X_C + i Y_C`` (rough ground: ``dZ_C/du = e^{i psi} (v_Cx + i v_Cy) dt/du``,
-   eqs. 1 and 37) are then Fourier series integrated term by term.  An orbit that ends
+   eqs. 1 and 37) are then Fourier series integrated term by term (FFTs and blocked
+   sums: memory O(M); M doubles until the tail is at its rounding floor, at most
+   ``max_terms``; ``docs/exact.md``, "Edges").  An orbit that ends
    is timed leg by leg with Gauss-Legendre after ``x = -cos w`` / ``x = cos w`` at its
    one turning point.
 
@@ -41,7 +43,9 @@ What ends a motion
 along the motion of: ``"lift-off"`` (``F_z`` of eq. 11, a function of ``theta`` on the
 orbit, reaches 0), ``"edge-contact"`` (h > 0, ``theta`` reaches 0), ``"fell-flat"``
 (``|theta|`` reaches pi/2) -- the guards of :mod:`rollingdisk.integrate.events`, with the time and
-``theta`` where it happens.  A state exactly on a steady motion is ``"steady"``.
+``theta`` where it happens.  A state exactly on a steady motion is ``"steady"``.  A
+quadrature that spends its work budget (``time_limit``, ``max_evals``, ``max_terms``)
+first is ``"not-converged"``, with a ``message``.
 
 For ``h = 0`` on rough ground ``omega3(theta)`` is a Legendre-type function: see
 :func:`thin_disk_omega3` and ``docs/exact.md``.
@@ -128,19 +132,24 @@ class _Budget:
         if time.monotonic() > self.deadline:
             raise _BudgetSpent(f"time_limit = {self.time_limit:g} s was spent in {where}")
 
-    def count(self) -> None:
+    def count(self, theta: float) -> None:
         self.evals += 1
         if self.evals > self.max_evals:
-            raise _BudgetSpent(f"the quadrature in theta needed more than max_evals = "
-                               f"{self.max_evals} evaluations")
-        if self.evals % 64 == 0:
-            self.clock("the quadrature in theta")
+            raise _BudgetSpent(f"max_evals = {self.max_evals} evaluations were spent in "
+                               f"{self._where(theta)}")
+        if self.evals % 64 == 0 and time.monotonic() > self.deadline:
+            self.clock(self._where(theta))
+
+    @staticmethod
+    def _where(theta: float) -> str:
+        return (f"the quadrature in theta (stuck at theta = {theta:.10g}, "
+                f"{0.5 * math.pi - abs(theta):.3g} from flat)")
 
 
 def _theta_rhs(rough: bool, h: float, budget: _Budget | None = None):
     def f(theta, z):
         if budget is not None:
-            budget.count()
+            budget.count(float(theta))
         w2, w3, q = z
         a1, c1, d2, d3 = _theta_coefficients(rough, h, theta, w2, w3)
         return [d2, d3, 2.0 * (a1 + c1 * q)]
