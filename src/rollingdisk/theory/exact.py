@@ -316,14 +316,20 @@ class ExactMotion:
                                    np.asarray(theta, float), w2, w3, q)
 
     def _functions(self, theta):
-        theta = np.asarray(theta, dtype=float)
+        theta = _real_array("theta", theta)
         if self._fit is None and self.status == NOT_CONVERGED_STATUS:
             raise ParameterError(f"the quadrature is not-converged ({self.message})")
         if self._fit is None:  # steady: constants
             it = state_index(self.ground, "theta")
             w2, w3 = self.y0[it + 3], self.y0[it + 4]
             return w2 + 0.0 * theta, w3 + 0.0 * theta, 0.0 * theta
-        return self._fit.functions(theta)
+        fit = self._fit
+        slack = 1e-9 * fit.d + 1e-15
+        if not np.all((theta >= fit.a - slack) & (theta <= fit.b + slack)):
+            raise ParameterError(f"theta must lie in the range of the orbit, "
+                                 f"[{fit.a:.12g}, {fit.b:.12g}]")
+        with np.errstate(all="ignore"):
+            return fit.functions(theta)
 
     def as_dict(self) -> dict:
         """Plain floats for JSON (None where a value does not exist)."""
@@ -700,7 +706,7 @@ def exact_motion(disk: Disk, ground: str, y0, *, time_limit: float = TIME_LIMIT,
         Budget of right-hand-side evaluations of the theta-ODE (>= 100), default
         :data:`MAX_EVALS`.
     max_terms : int, optional
-        Largest Fourier length per period (128 to 2^22; memory O(max_terms)), default
+        Largest Fourier length per period (128 to 2^20; memory O(max_terms)), default
         :data:`MAX_TERMS` (2^17).  When the budget is spent first the status is
         ``"not-converged"`` (with a ``message``), never a hang.
 
@@ -732,7 +738,7 @@ def exact_motion(disk: Disk, ground: str, y0, *, time_limit: float = TIME_LIMIT,
     y0 = _check_state(ground, y0)
     budget = _Budget(check_real("time_limit", time_limit, low=0.0, low_open=True),
                      check_int("max_evals", max_evals, low=100),
-                     check_int("max_terms", max_terms, low=128, high=1 << 22))
+                     check_int("max_terms", max_terms, low=128, high=1 << 20))
     known = {}
     try:
         with np.errstate(over="raise", invalid="raise", divide="raise", under="ignore"):
