@@ -108,11 +108,19 @@ _TINY = 1e-300  # theta "= 0" on the side of the motion (h~ keeps its sign)
 # the linear system in theta
 # ---------------------------------------------------------------------------------------
 def _theta_coefficients(rough: bool, h: float, theta, w2, w3):
-    """``(D1 at q=0, dD1/dq, D2, D3)``: eq. (38)/(49) at ``omega1 = 0`` and ``1``."""
+    """``(D1 at q=0, dD1/dq, D2, D3)``: eq. (38)/(49) at ``omega1 = 0`` and ``1``.
+
+    ``dD1/dq``, the coefficient of ``omega1^2`` in ``d omega1/dt``, depends on ``theta``
+    alone (sympy: ``tests/test_exact_edges.py``), so it is taken at ``omega2 = omega3 = 0``:
+    as the difference of the kernel at ``omega1 = 1`` and ``0`` with the orbit's rates it
+    lost ``eps (omega2^2 + omega3^2)`` to cancellation, noise that (times ``q``) stalled the
+    theta-ODE at rates ~1e5."""
     kernel = _rough_omega_dot if rough else _smooth_omega_dot
-    a1 = kernel(h, theta, 0.0 * theta, w2, w3)[0]
-    b1, b2, b3 = kernel(h, theta, 1.0 + 0.0 * theta, w2, w3)
-    return a1, b1 - a1, b2, b3
+    zero, one = 0.0 * theta, 1.0 + 0.0 * theta
+    a1 = kernel(h, theta, zero, w2, w3)[0]
+    _, b2, b3 = kernel(h, theta, one, w2, w3)
+    c1 = kernel(h, theta, one, zero, zero)[0] - kernel(h, theta, zero, zero, zero)[0]
+    return a1, c1, b2, b3
 
 
 class _BudgetSpent(Exception):
