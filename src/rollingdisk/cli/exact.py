@@ -82,6 +82,8 @@ def run(args) -> int:
     if record["drift"] is not None:
         print(f"{'drift':<12} {record['drift'][0]:>18.12g} {record['drift'][1]:.12g}"
               "   contact point's displacement over the first period (X, Y)")
+    if ex.message:
+        print(f"{'message':<12} {ex.message}")
     if args.out is not None:
         print(f"wrote {args.out}")
     return 0

@@ -39,7 +39,7 @@ class Outcome:
 
 # integer codes, shared with the compiled integrators (numba reads them as globals)
 RUNNING, COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED, STEP_BUDGET = range(7)
-BOUNDED, STEADY, AT_REST, NO_STEADY_MOTION = 7, 8, 9, 10
+BOUNDED, STEADY, AT_REST, NO_STEADY_MOTION, NOT_CONVERGED = 7, 8, 9, 10, 11
 
 #: Every outcome, by code.  ``running`` is the kernels' "not ended yet" and never a result.
 OUTCOMES = (
@@ -60,6 +60,9 @@ OUTCOMES = (
     Outcome(AT_REST, "at-rest", "the disk came to rest"),
     Outcome(NO_STEADY_MOTION, "no-steady-motion", "a sweep's grid point where no steady "
             "motion has the parameters (e.g. Omega0^2 <= 0, eq. 31): nothing was integrated"),
+    Outcome(NOT_CONVERGED, "not-converged", "exact motion: the quadrature did not reach its "
+            "rounding floor within its work budget (theta-ODE steps, Fourier terms or "
+            "wall-clock time); the message says which"),
 )
 _BY_NAME = {o.name: o for o in OUTCOMES}
 _BY_CODE = {o.code: o for o in OUTCOMES}

@@ -31,7 +31,9 @@ How the quadratures are done
    (``u`` from 0 to 2 pi) the integrand is periodic and analytic, so the trapezoidal rule
    (an FFT) converges exponentially.  ``t(u)``, ``psi(u)``, ``phi(u)`` and the centre's
    path ``X_C + i Y_C`` (rough ground: ``dZ_C/du = e^{i psi} (v_Cx + i v_Cy) dt/du``,
-   eqs. 1 and 37) are then Fourier series integrated term by term.  An orbit that ends
+   eqs. 1 and 37) are then Fourier series integrated term by term (FFTs and blocked
+   sums: memory O(M); M doubles until the tail is at its rounding floor, at most
+   ``max_terms``; ``docs/exact.md``, "Edges").  An orbit that ends
    is timed leg by leg with Gauss-Legendre after ``x = -cos w`` / ``x = cos w`` at its
    one turning point.
 
@@ -41,7 +43,9 @@ What ends a motion
 along the motion of: ``"lift-off"`` (``F_z`` of eq. 11, a function of ``theta`` on the
 orbit, reaches 0), ``"edge-contact"`` (h > 0, ``theta`` reaches 0), ``"fell-flat"``
 (``|theta|`` reaches pi/2) -- the guards of :mod:`rollingdisk.integrate.events`, with the time and
-``theta`` where it happens.  A state exactly on a steady motion is ``"steady"``.
+``theta`` where it happens.  A state exactly on a steady motion is ``"steady"``.  A
+quadrature that spends its work budget (``time_limit``, ``max_evals``, ``max_terms``)
+first is ``"not-converged"``, with a ``message``.
 
 For ``h = 0`` on rough ground ``omega3(theta)`` is a Legendre-type function: see
 :func:`thin_disk_omega3` and ``docs/exact.md``.
@@ -50,6 +54,7 @@ For ``h = 0`` on rough ground ``omega3(theta)`` is a Legendre-type function: see
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -62,16 +67,37 @@ from rollingdisk.model.equations import (
     _smooth_omega_dot,
 )
 from rollingdisk.model.geometry import _geometry
-from rollingdisk.model.outcomes import BOUNDED, EDGE_CONTACT, FELL_FLAT, LIFT_OFF, STEADY, names
-from rollingdisk.model.state import _as_state, state_index
-from rollingdisk.util.checks import check_real
+from rollingdisk.model.outcomes import (
+    BOUNDED,
+    EDGE_CONTACT,
+    FELL_FLAT,
+    LIFT_OFF,
+    NOT_CONVERGED,
+    STEADY,
+    names,
+)
+from rollingdisk.model.state import state_index, state_names
+from rollingdisk.util.checks import check_int, check_real
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["ExactMotion", "exact_motion", "exact_steady", "Backbone", "backbone",
-           "thin_disk_omega3", "EXACT_STATUSES"]
+           "thin_disk_omega3", "EXACT_STATUSES", "NOT_CONVERGED_STATUS", "TIME_LIMIT",
+           "MAX_EVALS", "MAX_TERMS"]
 
-#: Possible values of :attr:`ExactMotion.status`.
+#: The answers :attr:`ExactMotion.status` can give (besides these, ``"not-converged"``:
+#: the work budget was spent first, see :data:`NOT_CONVERGED_STATUS`).
 EXACT_STATUSES = names(BOUNDED, STEADY, LIFT_OFF, EDGE_CONTACT, FELL_FLAT)
+#: The status of a quadrature that spent its work budget before converging.
+NOT_CONVERGED_STATUS = names(NOT_CONVERGED)[0]
+
+#: Default work budget of one exact motion: wall-clock seconds, right-hand-side
+#: evaluations of the theta-ODE, Fourier terms per period.
+TIME_LIMIT, MAX_EVALS, MAX_TERMS = 5.0, 200_000, 1 << 17
+#: Most points :func:`thin_disk_omega3` evaluates in one call.
+THIN_DISK_MAX_POINTS = 2_000
+_RATE_MAX = 1e50  # |omega_i| above this: the quadrature's products (q^2, ...) overflow
+_EPS = float(np.finfo(float).eps)
+_CHUNK = 1 << 18  # complex numbers per block of a Fourier sum (4 MiB)
 
 _RTOL = 1e-13  # the theta-ODE's tolerance
 _FLAT = 0.5 * math.pi - 1e-9  # |theta| where the theta-ODE stops: the disk lies flat
@@ -82,39 +108,92 @@ _TINY = 1e-300  # theta "= 0" on the side of the motion (h~ keeps its sign)
 # the linear system in theta
 # ---------------------------------------------------------------------------------------
 def _theta_coefficients(rough: bool, h: float, theta, w2, w3):
-    """``(D1 at q=0, dD1/dq, D2, D3)``: eq. (38)/(49) at ``omega1 = 0`` and ``1``."""
+    """``(D1 at q=0, dD1/dq, D2, D3)``: eq. (38)/(49) at ``omega1 = 0`` and ``1``.
+
+    ``dD1/dq``, the coefficient of ``omega1^2`` in ``d omega1/dt``, depends on ``theta``
+    alone (sympy: ``tests/test_exact_edges.py``), so it is taken at ``omega2 = omega3 = 0``:
+    as the difference of the kernel at ``omega1 = 1`` and ``0`` with the orbit's rates it
+    lost ``eps (omega2^2 + omega3^2)`` to cancellation, noise that (times ``q``) stalled the
+    theta-ODE at rates ~1e5."""
     kernel = _rough_omega_dot if rough else _smooth_omega_dot
-    a1 = kernel(h, theta, 0.0 * theta, w2, w3)[0]
-    b1, b2, b3 = kernel(h, theta, 1.0 + 0.0 * theta, w2, w3)
-    return a1, b1 - a1, b2, b3
+    zero, one = 0.0 * theta, 1.0 + 0.0 * theta
+    a1 = kernel(h, theta, zero, w2, w3)[0]
+    _, b2, b3 = kernel(h, theta, one, w2, w3)
+    c1 = kernel(h, theta, one, zero, zero)[0] - kernel(h, theta, zero, zero, zero)[0]
+    return a1, c1, b2, b3
 
 
-def _theta_rhs(rough: bool, h: float):
+class _BudgetSpent(Exception):
+    """The work budget of one exact motion is spent (message says which part)."""
+
+
+class _Budget:
+    """Work budget of one exact motion: a wall-clock deadline, a number of right-hand-side
+    evaluations of the theta-ODE and a largest Fourier length."""
+
+    def __init__(self, time_limit: float, max_evals: int, max_terms: int):
+        self.time_limit, self.max_evals, self.max_terms = time_limit, max_evals, max_terms
+        self.deadline = time.monotonic() + time_limit
+        self.evals = 0
+
+    def clock(self, where: str) -> None:
+        if time.monotonic() > self.deadline:
+            raise _BudgetSpent(f"time_limit = {self.time_limit:g} s was spent in {where}")
+
+    def count(self, theta: float) -> None:
+        self.evals += 1
+        if self.evals > self.max_evals:
+            raise _BudgetSpent(f"max_evals = {self.max_evals} evaluations were spent in "
+                               f"{self._where(theta)}")
+        if self.evals % 64 == 0 and time.monotonic() > self.deadline:
+            self.clock(self._where(theta))
+
+    @staticmethod
+    def _where(theta: float) -> str:
+        return (f"the quadrature in theta (stuck at theta = {theta:.10g}, "
+                f"{0.5 * math.pi - abs(theta):.3g} from flat)")
+
+
+def _theta_rhs(rough: bool, h: float, budget: _Budget | None = None):
     def f(theta, z):
+        if budget is not None:
+            budget.count(float(theta))
         w2, w3, q = z
         a1, c1, d2, d3 = _theta_coefficients(rough, h, theta, w2, w3)
         return [d2, d3, 2.0 * (a1 + c1 * q)]
     return f
 
 
-def _q_event(theta, z):
-    return z[2]
+def _q_event(theta0: float):
+    """``q``, the event that ends a sweep at a turning point; ``+1`` at ``theta0`` itself,
+    so that a start exactly at a turning point (``q = 0``) is not taken for the end when
+    the first step already passes the other one (an amplitude below the step)."""
+    def event(theta, z):
+        return 1.0 if theta == theta0 else z[2]
+    event.terminal = True
+    event.direction = -1.0
+    return event
 
 
-_q_event.terminal = True
-_q_event.direction = -1.0
-
-
-def _sweep(rough, h, theta0, z0, end):
+def _sweep(rough, h, theta0, z0, end, budget):
     """Integrate the theta-ODE from ``theta0`` to ``end``, stopping where ``q`` falls to 0.
 
-    Returns ``(theta_reached, kind, sol)``; ``kind`` is ``"turn"`` or ``"end"``."""
+    Returns ``(theta_reached, kind, sol)``; ``kind`` is ``"turn"`` or ``"end"``.
+
+    The absolute tolerances sit just below the rounding floor of the right-hand side:
+    ``D1`` is a sum of terms of size ``S = 1 + omega2^2 + omega3^2 + q`` that cancel near a
+    steady motion, so it carries noise ``~ eps S``; an absolute tolerance of ``1e-30`` (with
+    ``q ~ 1e-12`` at an amplitude of 1e-6) made the error estimate see that noise and cut
+    the step to 1e-15 in theta, for ever.  With ``atol = 1e-6 eps S`` noise alone limits a
+    step to ~1e-6, and the error accumulated over a sweep is the rounding floor itself."""
     from scipy.integrate import solve_ivp
 
     if theta0 == end:
         return theta0, "end", None
-    sol = solve_ivp(_theta_rhs(rough, h), (theta0, end), z0, method="DOP853", rtol=_RTOL,
-                    atol=1e-30, dense_output=True, events=_q_event)
+    S = 1.0 + z0[0] * z0[0] + z0[1] * z0[1] + z0[2]
+    atol = [1e-6 * _EPS * math.sqrt(S)] * 2 + [1e-6 * _EPS * S]
+    sol = solve_ivp(_theta_rhs(rough, h, budget), (theta0, end), z0, method="DOP853",
+                    rtol=_RTOL, atol=atol, dense_output=True, events=_q_event(theta0))
     if sol.status < 0:
         raise ParameterError(f"the quadrature in theta failed ({sol.message}); the state "
                              "is outside what the exact solution can follow")
@@ -137,7 +216,10 @@ class ExactMotion:
     status : str
         ``"bounded"`` (periodic nutation between turning points), ``"steady"`` (the state
         is a steady motion), or what ends it: ``"lift-off"``, ``"edge-contact"``,
-        ``"fell-flat"`` (see :data:`EXACT_STATUSES`).
+        ``"fell-flat"`` (see :data:`EXACT_STATUSES`); or ``"not-converged"``: the work
+        budget (``time_limit``, ``max_evals``, ``max_terms``) was spent before the
+        quadrature reached its rounding floor (``message`` says where; what is known, the
+        range of ``theta``, is filled in, the rest is None).
     E : float
         Energy, eq. (13).
     theta_min, theta_max : float
@@ -157,6 +239,8 @@ class ExactMotion:
         When and where the motion ends (None when bounded or steady).
     y0 : numpy.ndarray
         The initial state (layout of :mod:`rollingdisk.model.equations`).
+    message : str
+        Why the quadrature stopped short (``"not-converged"`` only; empty otherwise).
     """
 
     disk: Disk
@@ -172,6 +256,7 @@ class ExactMotion:
     t_end: float | None
     theta_end: float | None
     y0: np.ndarray = field(repr=False, compare=False)
+    message: str = ""
     _fit: object = field(default=None, repr=False, compare=False)
     _orbit: object = field(default=None, repr=False, compare=False)
 
@@ -197,9 +282,20 @@ class ExactMotion:
         and steady motions only: for all ``t``; an orbit that ends raises.
         """
         if self._orbit is None:
+            if self.status == NOT_CONVERGED_STATUS:
+                raise ParameterError(f"state(t) needs a bounded or steady motion; this "
+                                     f"quadrature is not-converged ({self.message})")
             raise ParameterError(f"state(t) needs a bounded or steady motion; this one "
                                  f"ends ({self.status} at t = {self.t_end:.10g})")
-        return self._orbit.state(t)
+        try:
+            t = np.asarray(t, dtype=float)
+        except (TypeError, ValueError):
+            raise ParameterTypeError(f"t must be a real number or an array of them, got "
+                                     f"{type(t).__name__}") from None
+        if not np.all(np.isfinite(t)):
+            raise ParameterError("t must be finite")
+        with np.errstate(all="ignore"):
+            return self._orbit.state(t)
 
     def theta(self, t):
         """``theta(t)`` (bounded and steady motions)."""
@@ -228,12 +324,20 @@ class ExactMotion:
                                    np.asarray(theta, float), w2, w3, q)
 
     def _functions(self, theta):
-        theta = np.asarray(theta, dtype=float)
+        theta = _real_array("theta", theta)
+        if self._fit is None and self.status == NOT_CONVERGED_STATUS:
+            raise ParameterError(f"the quadrature is not-converged ({self.message})")
         if self._fit is None:  # steady: constants
             it = state_index(self.ground, "theta")
             w2, w3 = self.y0[it + 3], self.y0[it + 4]
             return w2 + 0.0 * theta, w3 + 0.0 * theta, 0.0 * theta
-        return self._fit.functions(theta)
+        fit = self._fit
+        slack = 1e-9 * fit.d + 1e-15
+        if not np.all((theta >= fit.a - slack) & (theta <= fit.b + slack)):
+            raise ParameterError(f"theta must lie in the range of the orbit, "
+                                 f"[{fit.a:.12g}, {fit.b:.12g}]")
+        with np.errstate(all="ignore"):
+            return fit.functions(theta)
 
     def as_dict(self) -> dict:
         """Plain floats for JSON (None where a value does not exist)."""
@@ -243,7 +347,8 @@ class ExactMotion:
                 "frequency": self.frequency, "delta_psi": self.delta_psi,
                 "delta_phi": self.delta_phi,
                 "drift": None if self.drift is None else list(self.drift),
-                "t_end": self.t_end, "theta_end": self.theta_end}
+                "t_end": self.t_end, "theta_end": self.theta_end,
+                "message": self.message}
 
     # -- SI view and notebooks ----------------------------------------------
     _KINDS = {"h": "dimensionless", "E": "energy", "theta_min": "angle",
@@ -293,18 +398,21 @@ class _Fit:
     """``omega2, omega3, q`` on ``[a, b]`` as Chebyshev series in ``x = (theta - m)/d``,
     and ``H = q / (d^2 (1 + x)^ra (1 - x)^rb)`` with the turning points divided out."""
 
-    def __init__(self, rough, h, a, b, ra, rb, evaluate):
+    def __init__(self, rough, h, a, b, ra, rb, evaluate, S=1.0):
         from numpy.polynomial import chebyshev as C
 
         self.rough, self.h, self.a, self.b, self.ra, self.rb = rough, h, a, b, ra, rb
         self.m, self.d = 0.5 * (a + b), 0.5 * (b - a)
+        # rounding floor of q: D1 carries noise ~ eps S, a step (<= the range) adds it up
+        floors = (0.0, 0.0, 16.0 * _EPS * S * self.d)
         prev = None
         for deg in (24, 48, 96, 192, 384):
             x = np.cos(np.pi * (np.arange(deg + 1) + 0.5) / (deg + 1))  # first kind
             z = evaluate(self.m + self.d * x)
             coef = [C.chebfit(x, zi, deg) for zi in z]
             tails = [_tail(c) for c in coef]
-            if max(tails) <= 1e-13:
+            if all(t <= 1e-13 or t * float(np.max(np.abs(c))) <= f
+                   for t, c, f in zip(tails, coef, floors)):
                 break
             if prev is not None and max(prev[1]) < 1e-10 and all(
                     t > 0.3 * p for t, p in zip(tails, prev[1]) if p > 1e-13):
@@ -368,7 +476,7 @@ class _Orbit:
     ``dt/du = 1/sqrt(H)``; everything periodic in ``u`` except the secular parts of
     ``t``, ``psi``, ``phi`` and the rotation of the centre's path."""
 
-    def __init__(self, fit, rough, h, y0, ground):
+    def __init__(self, fit, rough, h, y0, ground, budget: _Budget):
         self.fit, self.rough, self.h, self.ground = fit, rough, h, ground
         iy = {n: state_index(ground, n) for n in ("theta", "omega1", "psi", "phi")}
         theta0, w10 = y0[iy["theta"]], y0[iy["omega1"]]
@@ -384,16 +492,19 @@ class _Orbit:
         M = 64
         prev = None
         while True:
-            res = self._series(M)
-            if prev is not None and all(abs(r - p) <= 2e-15 * max(1.0, abs(p))
-                                        for r, p in zip(res[:3], prev[:3])) \
-                    and self._tail_small():
+            budget.clock(f"the Fourier series (length {M})")
+            res, floors = self._series(M)
+            if prev is not None and self._tail_small(floors) and all(
+                    abs(r - p) <= 2.0 * math.pi * 2.0 * (f + g)
+                    for r, p, f, g in zip(res, prev[0], floors, prev[1])):
                 break
-            if M >= 1 << 15:
-                raise ParameterError("the orbit's period does not converge (the orbit is "
-                                     "too close to a separatrix)")
-            prev, M = res, 2 * M
-        self.T, self.dpsi, self.dphi = res[:3]
+            if 2 * M > budget.max_terms:
+                raise _BudgetSpent(
+                    f"the Fourier series in u did not reach its rounding floor with "
+                    f"max_terms = {budget.max_terms} terms (the orbit passes close to an "
+                    f"unstable steady motion: a near-separatrix)")
+            prev, M = (res, floors), 2 * M
+        self.T, self.dpsi, self.dphi = res
 
     # per-u quantities --------------------------------------------------------------
     def _local(self, u):
@@ -408,39 +519,74 @@ class _Orbit:
         return theta, w1, w2, w3, F, w3 / c, w2 - w3 * np.tan(theta)  # eqs. (2)
 
     def _series(self, M):
+        """Fourier coefficients of ``dt/du``, ``dpsi/du``, ``dphi/du`` (and on rough ground
+        of the centre's velocity) from ``M`` samples: O(M) memory (FFTs only).
+
+        Returns ``((T, dpsi, dphi), floors)``: the floors are the rounding noise of each
+        series' coefficients, propagated from the evaluation errors of the samples (the
+        Chebyshev sums, ``1/sqrt(H)`` steep where ``H`` is small) plus the FFT's own."""
         u = 2.0 * np.pi * np.arange(M) / M
         theta, w1, w2, w3, F, Om, ph = self._local(u)
         n = np.fft.fftfreq(M, 1.0 / M)
         self.n = n
-        cF = np.fft.fft(F) / M
-        cOm = np.fft.fft(Om * F) / M
-        cph = np.fft.fft(ph * F) / M
-        self.cF, self.cOm, self.cph = cF, cOm, cph
-        T = 2.0 * np.pi * cF[0].real
-        dpsi = 2.0 * np.pi * cOm[0].real
-        dphi = 2.0 * np.pi * cph[0].real
+        fit = self.fit
+        dH = 8.0 * _EPS * float(np.sum(np.abs(fit.cH)))
+        d2 = 8.0 * _EPS * float(np.sum(np.abs(fit.c2)))
+        d3 = 8.0 * _EPS * float(np.sum(np.abs(fit.c3)))
+        c = np.abs(np.cos(theta))
+        dF = 0.5 * F ** 3 * dH + _EPS * F
+        dOm = d3 / c + _EPS * np.abs(Om)
+        dph = d2 + d3 * np.abs(np.tan(theta)) + _EPS * np.abs(ph)
+        samples = (F, Om * F, ph * F)
+        errors = (dF, np.abs(Om) * dF + dOm * F, np.abs(ph) * dF + dph * F)
+        coefs, floors = [], []
+        for f, df in zip(samples, errors):
+            cf = np.fft.fft(f) / M
+            coefs.append(cf)
+            floors.append(max(256.0 * _EPS * float(np.max(np.abs(cf))),
+                              4.0 * float(np.mean(df))
+                              + 8.0 * _EPS * math.log2(M) * float(np.sqrt(np.mean(f * f)))))
+        self.cF, self.cOm, self.cph = coefs
+        self.floors = floors
+        T = 2.0 * np.pi * self.cF[0].real
+        dpsi = 2.0 * np.pi * self.cOm[0].real
+        dphi = 2.0 * np.pi * self.cph[0].real
         self.kappa = dpsi / (2.0 * np.pi)
         if self.rough:
             ht, s, cc, p, y_P, z_P = _geometry(self.h, theta)
             w = (w2 - ht * w3) * F + 1j * (w1 * z_P) * F  # (v_Cx + i v_Cy) dt/du, eq. (37)
-            psi_per = self._periodic(cOm, u)
+            psi_per = self._periodic_on_grid(self.cOm)
             self.cG = np.fft.fft(w * np.exp(1j * psi_per)) / M
         self.M = M
-        return T, dpsi, dphi
+        return (T, dpsi, dphi), floors
 
-    def _tail_small(self):
-        M = self.M
-        k = np.abs(self.n) > M // 4
-        tail = max(float(np.max(np.abs(self.cF[k]))), float(np.max(np.abs(self.cOm[k]))))
-        scale = float(abs(self.cF[0]) + abs(self.cOm[0]))
-        return tail <= 1e-15 * scale
+    def _tail_small(self, floors):
+        """The coefficients beyond ``M/4`` are at their rounding floor (all three)."""
+        k = np.abs(self.n) > self.M // 4
+        return all(float(np.max(np.abs(c[k]))) <= f
+                   for c, f in zip((self.cF, self.cOm, self.cph), floors))
 
-    def _periodic(self, c, u):
-        """The zero-mean antiderivative of the Fourier series ``c`` at ``u``."""
+    def _periodic_on_grid(self, c):
+        """The zero-mean antiderivative of the Fourier series ``c`` at the ``M`` grid
+        points ``u_j = 2 pi j / M``: one inverse FFT."""
         n = self.n
         nz = n != 0
+        b = np.zeros_like(c)
+        b[nz] = c[nz] / (1j * n[nz])
+        return (np.fft.ifft(b) * n.size).real
+
+    def _periodic(self, c, u):
+        """The zero-mean antiderivative of the Fourier series ``c`` at any ``u``: a direct
+        sum, in blocks of at most ``_CHUNK`` terms (bounded memory)."""
+        n = self.n
+        nz = n != 0
+        b, k = c[nz] / (1j * n[nz]), n[nz]
         u = np.atleast_1d(np.asarray(u, float))
-        return (np.exp(1j * np.outer(u, n[nz])) @ (c[nz] / (1j * n[nz]))).real
+        out = np.empty(u.size)
+        step = max(1, _CHUNK // max(1, k.size))
+        for i in range(0, u.size, step):
+            out[i:i + step] = (np.exp(1j * np.outer(u[i:i + step], k)) @ b).real
+        return out
 
     def _t(self, u):
         return self.cF[0].real * (u - self.u0) + self._periodic(self.cF, u) \
@@ -466,7 +612,7 @@ class _Orbit:
             - self._periodic(self.cph, self.u0)
 
     def _Z(self, u, t):
-        """Centre C as ``X_C + i Y_C``."""
+        """Centre C as ``X_C + i Y_C`` (blocks of at most ``_CHUNK`` terms)."""
         if not self.rough:
             return self.Z0 + self.V * t  # smooth ground: V constant (eq. 8, F_x = F_y = 0)
         n, cG, kap = self.n, self.cG, self.kappa
@@ -476,17 +622,22 @@ class _Orbit:
         res = np.abs(k) < 1e-12
         u = np.atleast_1d(u)
         ks = np.where(res, 1.0, k)
-        E1 = np.exp(1j * np.outer(u, ks))
         E0 = np.exp(1j * ks * self.u0)
-        terms = (E1 - E0) * (cG / (1j * ks))
-        terms = np.where(res, np.outer(u - self.u0, cG), terms)
-        return self.Z0 + np.exp(1j * psi_c) * terms.sum(axis=1)
+        coef = cG / (1j * ks)
+        total = np.empty(u.size, complex)
+        step = max(1, _CHUNK // max(1, ks.size))
+        for i in range(0, u.size, step):
+            uu = u[i:i + step]
+            terms = (np.exp(1j * np.outer(uu, ks)) - E0) * coef
+            terms = np.where(res, np.outer(uu - self.u0, cG), terms)
+            total[i:i + step] = terms.sum(axis=1)
+        return self.Z0 + np.exp(1j * psi_c) * total
 
     def state(self, t):
         scalar = np.ndim(t) == 0
         t = np.atleast_1d(np.asarray(t, float))
         out = np.empty((t.size, 8 if self.rough else 10))
-        for i0 in range(0, t.size, 2048):  # bounded memory for the Fourier sums
+        for i0 in range(0, t.size, 2048):
             tt = t[i0:i0 + 2048]
             u = self._u_of_t(tt)
             theta, w1, w2, w3 = self._local(u)[:4]
@@ -496,8 +647,6 @@ class _Orbit:
             if not self.rough:
                 cols["V_X"] = np.full(tt.size, self.V.real)
                 cols["V_Y"] = np.full(tt.size, self.V.imag)
-            from rollingdisk.model.state import state_names
-
             for j, name in enumerate(state_names(self.ground)):
                 out[i0:i0 + 2048, j] = cols[name]
         return out[0] if scalar else out
@@ -581,7 +730,8 @@ def _leg_time(fit: _Fit, th1: float, th2: float) -> float:
 # ---------------------------------------------------------------------------------------
 # public API
 # ---------------------------------------------------------------------------------------
-def exact_motion(disk: Disk, ground: str, y0) -> ExactMotion:
+def exact_motion(disk: Disk, ground: str, y0, *, time_limit: float = TIME_LIMIT,
+                 max_evals: int = MAX_EVALS, max_terms: int = MAX_TERMS) -> ExactMotion:
     """The exact motion from the state ``y0``, by quadrature (module docstring).
 
     Parameters
@@ -591,7 +741,16 @@ def exact_motion(disk: Disk, ground: str, y0) -> ExactMotion:
         The ideal grounds of the paper (eqs. 38, 49); the Coulomb ground is not integrable.
     y0 : array_like
         Initial state, layout of :mod:`rollingdisk.model.equations` (8 components on rough,
-        10 on smooth ground).
+        10 on smooth ground).  Rates ``|omega_i|`` up to ``1e50`` (units ``sqrt(g/a)``).
+    time_limit : float, optional
+        Wall-clock budget in seconds (> 0), default :data:`TIME_LIMIT` (5 s).
+    max_evals : int, optional
+        Budget of right-hand-side evaluations of the theta-ODE (>= 100), default
+        :data:`MAX_EVALS`.
+    max_terms : int, optional
+        Largest Fourier length per period (128 to 2^20; memory O(max_terms)), default
+        :data:`MAX_TERMS` (2^17).  When the budget is spent first the status is
+        ``"not-converged"`` (with a ``message``), never a hang.
 
     Returns
     -------
@@ -601,8 +760,11 @@ def exact_motion(disk: Disk, ground: str, y0) -> ExactMotion:
     Raises
     ------
     ParameterError
-        Non-finite state, ``|theta| >= pi/2``, ``theta = 0`` with ``h > 0``, ``F_z < 0``
-        at the start (eq. 11), an orbit the quadrature cannot resolve.
+        Non-finite state, rates beyond ``1e50``, ``|theta| >= pi/2``, ``theta = 0`` with
+        ``h > 0``, ``F_z < 0`` at the start (eq. 11), an orbit the quadrature cannot
+        resolve, a state whose arithmetic overflows.
+    ParameterTypeError
+        ``disk`` not a Disk, ``ground`` not a string, ``y0`` not an array of real numbers.
 
     Examples
     --------
@@ -614,14 +776,83 @@ def exact_motion(disk: Disk, ground: str, y0) -> ExactMotion:
     ('bounded', 1.0)
     """
     disk = _check_disk(disk)
-    if not isinstance(ground, str) or ground not in ("rough", "smooth"):
+    ground = _check_ground(ground)
+    y0 = _check_state(ground, y0)
+    budget = _Budget(check_real("time_limit", time_limit, low=0.0, low_open=True),
+                     check_int("max_evals", max_evals, low=100),
+                     check_int("max_terms", max_terms, low=128, high=1 << 20))
+    known = {}
+    try:
+        with np.errstate(over="raise", invalid="raise", divide="raise", under="ignore"):
+            return _exact_motion(disk, ground, y0, budget, known)
+    except (FloatingPointError, OverflowError) as exc:
+        raise ParameterError(f"the state is out of the range the quadrature can follow: "
+                             f"its arithmetic overflows ({exc})") from None
+    except _BudgetSpent as exc:
+        th = float(y0[state_index(ground, "theta")])
+        return ExactMotion(status=NOT_CONVERGED_STATUS, theta_min=known.get("a", th),
+                           theta_max=known.get("b", th), period=None, delta_psi=None,
+                           delta_phi=None, drift=None, t_end=None, theta_end=None,
+                           message=str(exc), _fit=known.get("fit"), **known["base"])
+
+
+def _check_ground(ground) -> str:
+    if not isinstance(ground, str):
+        raise ParameterTypeError(f"ground must be the string 'rough' or 'smooth', got "
+                                 f"{type(ground).__name__} {ground!r}")
+    if ground not in ("rough", "smooth"):
         raise ParameterError(f"ground must be 'rough' or 'smooth' for an exact motion "
                              f"(the Coulomb ground is not integrable), got {ground!r}")
-    y0 = _as_state(ground, y0)
-    if y0.ndim != 1:
-        raise ParameterError("y0 must be one state vector")
-    if not np.all(np.isfinite(y0)):
-        raise ParameterError("y0 must be finite")
+    return ground
+
+
+def _check_state(ground: str, y0) -> np.ndarray:
+    """``y0`` as one finite float state with rates in range, or a named error."""
+    names_ = state_names(ground)
+    y = _real_array("y0", y0)
+    if y.shape != (len(names_),):
+        raise ParameterError(f"y0 must be one state of {len(names_)} components "
+                             f"({', '.join(names_)}) on {ground} ground, got shape {y.shape}")
+    if not np.all(np.isfinite(y)):
+        raise ParameterError("y0 must be finite (no NaN or infinity)")
+    it = state_index(ground, "theta")
+    rate = float(np.max(np.abs(y[it + 2:it + 5])))
+    if rate > _RATE_MAX:
+        raise ParameterError(f"y0 is out of range: rates |omega_i| up to {_RATE_MAX:g} "
+                             f"sqrt(g/a) can be followed (beyond, omega^2 and its products "
+                             f"overflow), got {rate:g}")
+    return y
+
+
+def _real_array(name: str, value, max_size: int = 1_000_000) -> np.ndarray:
+    """``value`` as a float array: ParameterTypeError for anything but real numbers
+    (strings, None, booleans, complex), ParameterError for ints beyond the float range."""
+    try:
+        raw = np.asarray(value)
+    except (TypeError, ValueError):  # ragged nesting
+        raise ParameterTypeError(f"{name} must be an array of real numbers, got "
+                                 f"{type(value).__name__}") from None
+    if raw.size > max_size:
+        raise ParameterError(f"{name}: at most {max_size} values, got {raw.size}")
+    if raw.dtype.kind == "O":
+        flat = raw.ravel()
+        for v in flat:
+            if isinstance(v, bool) or not isinstance(v, (int, float, np.integer,
+                                                         np.floating)):
+                raise ParameterTypeError(f"{name} must be an array of real numbers, got an "
+                                         f"element of type {type(v).__name__}")
+        try:
+            return np.array([float(v) for v in flat], dtype=float).reshape(raw.shape)
+        except OverflowError:
+            raise ParameterError(f"{name} must be finite: a value is beyond the "
+                                 f"floating-point range (|value| > 1.8e308)") from None
+    if raw.dtype.kind in "iuf":
+        return raw.astype(float)
+    raise ParameterTypeError(f"{name} must be an array of real numbers, got dtype "
+                             f"{raw.dtype} ({type(value).__name__})")
+
+
+def _exact_motion(disk, ground, y0, budget, known):
     rough = ground == "rough"
     h = disk.h
     it = state_index(ground, "theta")
@@ -648,6 +879,7 @@ def exact_motion(disk: Disk, ground: str, y0) -> ExactMotion:
     a1, c1, _, _ = _theta_coefficients(rough, h, theta0, w20, w30)
     accel = a1 + c1 * q0  # d omega1/dt at the start
     base = dict(disk=disk, ground=ground, E=E, y0=np.array(y0, float))
+    known["base"] = base
     if q0 == 0.0 and abs(accel) <= 1e-14 * (1.0 + w20 * w20 + w30 * w30):
         return _steady_result(base, rough, h, theta0, w20, w30)
 
@@ -655,13 +887,14 @@ def exact_motion(disk: Disk, ground: str, y0) -> ExactMotion:
     if q0 == 0.0:  # theta0 is a turning point; the motion starts towards accel's sign
         if accel > 0:
             a, ka, fa = theta0, "turn", None
-            b, kb, fb = _sweep(rough, h, theta0, z0, hi)
+            b, kb, fb = _sweep(rough, h, theta0, z0, hi, budget)
         else:
             b, kb, fb = theta0, "turn", None
-            a, ka, fa = _sweep(rough, h, theta0, z0, lo)
+            a, ka, fa = _sweep(rough, h, theta0, z0, lo, budget)
     else:
-        b, kb, fb = _sweep(rough, h, theta0, z0, hi)
-        a, ka, fa = _sweep(rough, h, theta0, z0, lo)
+        b, kb, fb = _sweep(rough, h, theta0, z0, hi, budget)
+        a, ka, fa = _sweep(rough, h, theta0, z0, lo, budget)
+    known.update(a=float(a), b=float(b))
 
     def evaluate(theta):
         theta = np.asarray(theta, float)
@@ -677,7 +910,10 @@ def exact_motion(disk: Disk, ground: str, y0) -> ExactMotion:
             out[:, ~up] = fb(np.clip(theta[~up], theta0, b))
         return out
 
-    fit = _Fit(rough, h, a, b, ka == "turn", kb == "turn", evaluate)
+    fit = _Fit(rough, h, a, b, ka == "turn", kb == "turn", evaluate,
+               S=1.0 + w20 * w20 + w30 * w30 + q0)
+    known["fit"] = fit
+    budget.clock("the Chebyshev fit")
     end_kind = {a: _end_kind(h, a, ka), b: _end_kind(h, b, kb)}
 
     # lift-off: zeros of F_z (eq. 11) on [a, b], the first one along the motion
@@ -717,7 +953,7 @@ def exact_motion(disk: Disk, ground: str, y0) -> ExactMotion:
                           t_end=t_end, theta_end=theta_end, _fit=fit, **base)
         return res
 
-    orbit = _Orbit(fit, rough, h, np.array(y0, float), ground)
+    orbit = _Orbit(fit, rough, h, np.array(y0, float), ground, budget)
     # drift of the contact point over the first period (eq. 5)
     from rollingdisk.model.equations import contact_point
 
@@ -761,19 +997,34 @@ def _steady_result(base, rough, h, theta0, w20, w30):
 
 
 def exact_steady(motion, *, perturb: float = 0.0, kick: float = 0.0, psi0: float = 0.0,
-                 phi0: float = 0.0) -> ExactMotion:
+                 phi0: float = 0.0, **budget) -> ExactMotion:
     """The exact motion from a steady motion with ``theta(0)`` and/or ``omega1(0)``
-    perturbed, exactly as :func:`rollingdisk.simulate_steady` starts it."""
+    perturbed, exactly as :func:`rollingdisk.simulate_steady` starts it.
+
+    ``perturb`` (rad) and ``kick`` (``sqrt(g/a)``) are added to ``theta(0)`` and
+    ``omega1(0)``; ``psi0``, ``phi0`` (rad) start the angles; ``budget`` is
+    ``time_limit``, ``max_evals``, ``max_terms`` of :func:`exact_motion`."""
     from rollingdisk.theory.steady import SteadyMotion
 
     if not isinstance(motion, SteadyMotion):
         raise ParameterTypeError(f"motion must be a SteadyMotion, got {type(motion).__name__}")
+    _check_budget_keys(budget)
     perturb = check_real("perturb", perturb)
     kick = check_real("kick", kick)
-    y0 = np.array(motion.initial_state(psi0, phi0), dtype=float)
-    y0[state_index(motion.ground, "theta")] += perturb
-    y0[state_index(motion.ground, "omega1")] += kick
-    return exact_motion(motion.disk, motion.ground, y0)
+    psi0 = check_real("psi0", psi0)
+    phi0 = check_real("phi0", phi0)
+    with np.errstate(all="ignore"):
+        y0 = np.array(motion.initial_state(psi0, phi0), dtype=float)
+        y0[state_index(motion.ground, "theta")] += perturb
+        y0[state_index(motion.ground, "omega1")] += kick
+    return exact_motion(motion.disk, motion.ground, y0, **budget)
+
+
+def _check_budget_keys(budget: dict) -> None:
+    extra = set(budget) - {"time_limit", "max_evals", "max_terms"}
+    if extra:
+        raise ParameterTypeError(f"unexpected keyword argument(s) {', '.join(sorted(extra))}"
+                                 f"; the budget is time_limit, max_evals, max_terms")
 
 
 @dataclass(frozen=True)
@@ -801,16 +1052,21 @@ class Backbone:
     varpi: float
 
 
-def backbone(motion, kicks) -> Backbone:
+def backbone(motion, kicks, **budget) -> Backbone:
     """Exact nutation period and frequency against amplitude (kicks ``omega1(0)``) about a
     steady motion: the backbone curve, which tends to ``varpi`` (eq. 39) at zero
-    amplitude."""
+    amplitude.  ``budget`` (``time_limit``, ``max_evals``, ``max_terms``) applies to each
+    kick's exact motion; a kick whose quadrature is not-converged gets NaN."""
     from rollingdisk.theory.oscillations import stability
+    from rollingdisk.theory.steady import SteadyMotion
 
-    kicks = np.asarray(kicks, dtype=float).ravel()
+    if not isinstance(motion, SteadyMotion):
+        raise ParameterTypeError(f"motion must be a SteadyMotion, got {type(motion).__name__}")
+    _check_budget_keys(budget)
+    kicks = _real_array("kicks", kicks, max_size=10_000).ravel()
     if kicks.size == 0 or not np.all(np.isfinite(kicks)):
         raise ParameterError("kicks must be a non-empty array of finite numbers")
-    rows = [exact_steady(motion, kick=float(k)) for k in kicks]
+    rows = [exact_steady(motion, kick=float(k), **budget) for k in kicks]
 
     def col(name):
         return np.array([np.nan if getattr(r, name) is None else getattr(r, name)
@@ -845,13 +1101,35 @@ def thin_disk_omega3(theta, theta0: float, omega20: float, omega30: float):
     parameters); an independent check of the quadrature of :func:`exact_motion`
     (derived in ``docs/exact.md``).
 
+    Parameters
+    ----------
+    theta : float or array_like
+        Tilt(s) in rad, finite, ``|theta| < pi/2``; at most :data:`THIN_DISK_MAX_POINTS`
+        values (each costs four hypergeometric sums in mpmath, ~30 ms).
+    theta0, omega20, omega30 : float
+        The point of the orbit that fixes ``A, B``: ``|theta0| < pi/2`` (rad) and the rates
+        there (``sqrt(g/a)``), finite.
+
     Returns
     -------
     (omega2, omega3) : numpy.ndarray
+        One-dimensional, one value per ``theta``.
+
+    Raises
+    ------
+    ParameterTypeError, ParameterError
+        Non-numbers; non-finite values, ``|theta| >= pi/2``, too many points.
     """
     import mpmath
 
-    theta = np.atleast_1d(np.asarray(theta, float))
+    half = 0.5 * math.pi
+    theta0 = check_real("theta0", theta0, low=-half, high=half, low_open=True, high_open=True)
+    omega20 = check_real("omega20", omega20)
+    omega30 = check_real("omega30", omega30)
+    theta = np.atleast_1d(_real_array("theta", theta, max_size=THIN_DISK_MAX_POINTS)).ravel()
+    if not np.all(np.isfinite(theta)) or np.any(np.abs(theta) >= half):
+        raise ParameterError("theta must be finite and lie in (-pi/2, pi/2) (the closed "
+                             "form has a logarithmic singularity at |theta| = pi/2)")
     r = mpmath.sqrt(mpmath.mpf(13) / 12) / 2
     a, b = mpmath.mpf(1) / 4 + 1j * r, mpmath.mpf(1) / 4 - 1j * r
 
@@ -869,11 +1147,16 @@ def thin_disk_omega3(theta, theta0: float, omega20: float, omega30: float):
                 [float(mpmath.re(-1.5 * c * d1)), float(mpmath.re(-1.5 * c * d2))])
 
     (p1, p2), (q1, q2) = ys(theta0)
-    A, B = np.linalg.solve([[p1, p2], [q1, q2]], [omega20, omega30])
-    w2 = np.empty(theta.size)
-    w3 = np.empty(theta.size)
-    for i, th in enumerate(theta):
+    with np.errstate(all="ignore"):
+        A, B = np.linalg.solve([[p1, p2], [q1, q2]], [omega20, omega30])
+    w2 = np.full(theta.size, np.nan)
+    w3 = np.full(theta.size, np.nan)
+    for i, th in enumerate(theta if math.isfinite(A) and math.isfinite(B) else ()):
         (y1, y2), (d1, d2) = ys(float(th))
-        w2[i] = A * y1 + B * y2
-        w3[i] = A * d1 + B * d2
+        with np.errstate(all="ignore"):
+            w2[i] = A * y1 + B * y2
+            w3[i] = A * d1 + B * d2
+    if not (np.all(np.isfinite(w2)) and np.all(np.isfinite(w3))):
+        raise ParameterError("the closed form overflows at these values (theta or theta0 "
+                             "too close to pi/2, or omega20, omega30 too large)")
     return w2, w3
