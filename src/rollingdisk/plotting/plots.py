@@ -429,7 +429,7 @@ def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200)
     ax.set_ylim(lo, hi)
     ax.set_xlabel(LABELS["theta0"])
     ax.set_ylabel(axis_label("$r_C$", "length", disk)
-                  + (f" (linear for $|r_C|<{_tick(linthresh * f)}$)"
+                  + (f" (linear for $|r_C|<{linthresh * f:.3g}$)"
                      if r_C_scale == "symlog" else ""))
     ax.set_title(title if title is not None else f"{ground} ground, $h = {h:.4g}$")
     if legend:
@@ -739,10 +739,11 @@ def plot_energy_error(traj, ax=None, *, title: str | None = None) -> dict:
     disk = disk_of(traj)
     _time_axis(ax, disk)
     fE = si_factor(disk, "energy")
-    if fE != 1.0:
+    if fE != 1.0:  # joules: tick labels such as 1e-15
         _show_scaled(ax.yaxis, fE)
+    else:
+        ax.ticklabel_format(axis="y", style="sci", scilimits=(-2, 2))
     ax.set_ylabel(axis_label("$E(t)-E(0)$", "energy", disk))
-    ax.ticklabel_format(axis="y", style="sci", scilimits=(-2, 2))
     ax.set_title(title if title is not None else "energy error")
     return {"ax": ax, "dE": line}
 
