@@ -580,8 +580,8 @@ def _thresholds_table(thr: dict) -> str:
         for g, what, eq, key, v in rows)
     return f"""<div class="scroll"><table>
 <tr><th>ground</th><th class="text">steady motion</th><th>eq.</th>
-<th>stable if |&omega;<sub>20</sub>| &gt; [{_W}]</th>
-<th>stable if |&omega;<sub>30</sub>| &gt; [{_W}]</th></tr>
+<th>stable if |&omega;<sub>20</sub>| &gt;<br>[{_W}]</th>
+<th>stable if |&omega;<sub>30</sub>| &gt;<br>[{_W}]</th></tr>
 {body}</table></div>"""
 
 

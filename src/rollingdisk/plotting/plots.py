@@ -417,7 +417,7 @@ def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200)
     if r_C_scale == "symlog":
         ax.set_yscale("symlog", linthresh=linthresh)
         if f == 1.0:
-            shown = [t for t in (-100, -10, -1, -linthresh, 0, linthresh, 1, 10, 100)]
+            shown = [-100, -10, -1, 0, 1, 10, 100]  # (+-linthresh crowded +-1)
         else:  # decades of metres
             shown = [0.0] + [s * 10.0 ** k / f for k in range(-6, 4) for s in (-1, 1)
                              if 10.0 ** k / f > 1.5 * linthresh]
