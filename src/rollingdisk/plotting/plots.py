@@ -807,6 +807,19 @@ def _plane_axes(da):
     return x, da["h"].values, r"$h$"
 
 
+#: Sweep axes other than theta0 and h: (symbol, kind of quantity) for their labels.
+_SWEEP_AXES = {"omega30": (r"$\omega_{30}$", "angular_speed"),
+               "Omega0": (r"$\Omega_0$", "angular_speed"),
+               "omega0": (r"$\omega_0$", "angular_speed"),
+               "r_C": ("$r_C$", "length")}
+
+
+def _sweep_xlabel(dim: str) -> str:
+    """The label of a sweep's second axis, with the paper's unit (sweeps run in them)."""
+    symbol, kind = _SWEEP_AXES.get(dim, (dim, None))
+    return axis_label(symbol, kind) if kind else dim
+
+
 def plot_nonlinear_map(ds, ax=None) -> dict:
     """Simulated stability of a sweep (:func:`rollingdisk.sweep.runner.run_sweep`) over
     ``(theta0, omega30 | r_C | Omega0)`` or, for straight lines, ``(h, omega0)``: bounded /
@@ -829,7 +842,7 @@ def plot_nonlinear_map(ds, ax=None) -> dict:
     boundary = None
     if np.isfinite(v.values).sum() > 3 and len(th) > 1 and len(y) > 1:
         boundary = ax.contour(y, th, v.values, levels=[0.0], colors="k", linewidths=1.0)
-    ax.set_xlabel(ss.dims[1])
+    ax.set_xlabel(_sweep_xlabel(ss.dims[1]))
     ax.set_ylabel(ylabel)
     ax.set_title(f"{ds.attrs.get('ground', '')}: bounded (green), grew (orange), "
                  "guard (red); black: $\\varpi^2 = 0$", fontsize="small")
@@ -851,7 +864,7 @@ def plot_basin_map(ds, ax=None) -> dict:
     boundary = None
     if np.isfinite(v.values).sum() > 3 and len(th) > 1 and len(y) > 1:
         boundary = ax.contour(y, th, v.values, levels=[0.0], colors="w", linewidths=1.0)
-    ax.set_xlabel(kb.dims[1])
+    ax.set_xlabel(_sweep_xlabel(kb.dims[1]))
     ax.set_ylabel(ylabel)
     ax.set_title(f"{ds.attrs.get('ground', '')}: basin size", fontsize="small")
     return {"ax": ax, "mesh": mesh, "colorbar": cb, "boundary": boundary}
