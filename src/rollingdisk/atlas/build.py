@@ -5,8 +5,9 @@ half-thickness ``h`` it writes into a folder
 
 * ``thresholds.json`` and a table of the stability thresholds (eqs. 42, 43, 53, 57 as
   corrected in :mod:`rollingdisk.theory.oscillations`),
-* existence maps (rough ground: ``(theta0, r_C)``, Figure 4 style; smooth ground: C at
-  rest), stability maps in ``(theta0, omega30)`` on both grounds, and the regions stable
+* the existence map on rough ground (``(theta0, r_C)``, Figure 4 style; on smooth ground
+  every steady circle exists, which the page says in a sentence), stability maps in
+  ``(theta0, omega30)`` on both grounds, and the regions stable
   for every ``omega30`` (Figures 5, 7) with this disk's ``h`` marked,
 * one stable and one unstable steady circle on rough ground, simulated from a small tilt
   perturbation, with their plots (paths of C and P, ``theta(t)``, energy error, contact
@@ -14,7 +15,11 @@ half-thickness ``h`` it writes into a folder
 * Euler's disk: the commercial toy (:mod:`rollingdisk.friction.euler_disk`, its own ``h = 0.169``)
   run to its end with creep friction and rolling resistance, with the fitted and the
   predicted exponents (run in a second process alongside the other steps),
-* ``index.html`` showing it all, with relative image paths and no external resources.
+* ``index.html`` showing it all, with relative image paths and no external resources: a
+  table of contents, a viewport for phones (images shrink to the width, wide tables
+  scroll), units on every number and axis (angles in degrees; the paper's units, or SI
+  when the disk given has a physical scale, see :func:`rollingdisk.plotting.plots.axis_label`),
+  and where to learn more (the documentation, ``rollingdisk explore``).
 
 It sits outside the numeric core (uses matplotlib through :mod:`rollingdisk.plotting.plots`).
 """
@@ -201,7 +206,7 @@ def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[l
 
     Returns the paths written (index excluded) and the records of the motions."""
     files: list[Path] = []
-    dpi = 60 if quick else 90
+    dpi = 60 if quick else 100
     n_map = (60, 50) if quick else (220, 180)
     # Euler's disk runs for seconds on its own: started first, in a second process, and
     # collected after the exact motion (step 8), so the atlas does not wait for it
@@ -232,21 +237,21 @@ def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
     files.append(out / "thresholds.json")
     pr.done()
 
-    # 2. existence maps -------------------------------------------------------------
-    pr.step("existence maps")
-    fig = Figure(figsize=(10.0, 4.2))
-    axs = fig.subplots(1, 2)
-    m_ex = plotting.plot_existence_map(h, "rough", axs[0], n=n_map,
-                                       title=f"rough ground, $h={h:.4g}$")
-    plotting.plot_existence_map(h, "smooth", axs[1], n=(n_map[0], 40),
-                                title=f"smooth ground, $h={h:.4g}$")
+    # 2. existence map (rough ground; on smooth ground every steady circle exists: a
+    # sentence on the page, not a panel of "none") ------------------------------------------
+    pr.step("existence map")
+    fig = Figure(figsize=(6.4, 5.0))
+    ax = fig.subplots(1, 1)
+    # h as given: a Disk with a physical scale labels the axes in SI (plots.axis_label)
+    m_ex = plotting.plot_existence_map(h, "rough", ax, n=n_map,
+                                       title=f"rough ground, $h={check_h(h):.4g}$")
     fig.tight_layout()
     _save(fig, out / "existence.png", dpi, files)
     pr.done(f"stable share {m_ex.share(STABLE):.2f}")
 
     # 3. stability maps -----------------------------------------------------------------
     pr.step("stability maps")
-    fig = Figure(figsize=(10.0, 4.2))
+    fig = Figure(figsize=(10.0, 5.0))
     axs = fig.subplots(1, 2)
     for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
         plotting.plot_stability_map(h, ground, ax, n=n_map,
@@ -263,9 +268,9 @@ def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
 
     # 4. stable for every omega30 --------------------------------------------------------
     pr.step("regions stable for every omega30")
-    fig = Figure(figsize=(10.0, 4.2))
+    fig = Figure(figsize=(10.0, 5.0))
     axs = fig.subplots(1, 2)
-    h_top = max(1.5, 2.0 * h)
+    h_top = max(1.5, 2.0 * check_h(h))
     for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
         plotting.plot_all_omega30_stable(ground, ax, n=n_map, h_range=(0.0, h_top),
                                          mark_h=h)
@@ -291,11 +296,12 @@ def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
                                                    n_out=300 if quick else 1500)
             fig = Figure(figsize=(9.0, 6.5))
             plotting.plot_trajectory(traj, fig, theta0=theta0,
-                                     title=f"{kind} steady circle, rough ground, h = {h:.4g}")
+                                     title=f"{kind} steady circle, rough ground, "
+                                           f"h = {check_h(h):.4g}")
             _save(fig, out / f"motion_{kind}.png", dpi, files)
             gif = out / f"motion_{kind}.gif"
             kw = dict(n_frames=6 if quick else 60, fps=12, dpi=55 if quick else 70,
-                      title=f"{kind} circle, h = {h:.4g}")
+                      title=f"{kind} circle, h = {check_h(h):.4g}")
             if kind == "stable" and (os.cpu_count() or 1) > 1:
                 helpers.append(_start_animation(traj, gif, kw))
             else:
@@ -353,7 +359,8 @@ def _exact_section(motion, out: Path, dpi: int, files: list) -> dict:
     ex = exact.exact_steady(motion, kick=kick)
     fig = Figure(figsize=(12.6, 4.0))
     plotting.plot_exact(ex, fig, backbone=bb, n_periods=20,
-                        title=f"exact motion about the stable circle, kick {kick:.3g}")
+                        title="exact motion about the stable circle, kicked by "
+                              rf"$d\theta/dt(0)$ = {kick:.3g} $\sqrt{{g/a}}$")
     _save(fig, out / "exact.png", dpi, files)
     return {"kick": kick, "theta_min": ex.theta_min, "theta_max": ex.theta_max,
             "period": ex.period, "linear_period": 2.0 * math.pi / varpi,
@@ -407,7 +414,7 @@ def _euler_disk_in_child(out: Path, quick: bool, dpi: int):
     _quiet_signals()
     result = run_euler_disk(EulerDisk(alpha0=0.05 if quick else 0.3), max_wall_time=60.0)
     fig = Figure(figsize=(10.0, 4.2))
-    plot_euler_disk(result, fig, title="Euler's disk: " + result.message)
+    plot_euler_disk(result, fig)  # title: plots.euler_disk_title, symbols with units
     fig.savefig(out / "euler_disk.png", dpi=dpi)
     (out / "euler_disk.json").write_text(json.dumps(result.summary(), indent=2,
                                                     allow_nan=False))
@@ -439,13 +446,29 @@ def _motion_record(motion, stab, traj, kick) -> dict:
     }
 
 
-_CSS = """body{font-family:sans-serif;max-width:1050px;margin:2em auto;padding:0 1em;
-color:#222;line-height:1.45}h1{font-size:1.6em}h2{border-bottom:1px solid #ccc;
-padding-bottom:.2em;margin-top:1.8em}table{border-collapse:collapse;margin:.8em 0}
-td,th{border:1px solid #bbb;padding:.25em .6em;text-align:right}th{background:#eee}
-td:first-child,th:first-child{text-align:left}img{max-width:100%;border:1px solid #ddd}
-.pair{display:flex;gap:1em;flex-wrap:wrap;align-items:flex-start}.note{color:#555;
-font-size:.92em}code{background:#f4f4f4;padding:0 .2em}"""
+#: The page's style: readable at phone width (the viewport meta tag, images no wider than
+#: the screen, wide tables scroll inside their box), 16 px body text.
+_CSS = """html{-webkit-text-size-adjust:100%;text-size-adjust:100%}
+body{font-family:system-ui,-apple-system,"Segoe UI",Roboto,sans-serif;font-size:16px;
+max-width:1050px;margin:1.5em auto;padding:0 1em;color:#222;line-height:1.5;
+overflow-wrap:break-word}
+h1{font-size:1.6em;line-height:1.25}h2{border-bottom:1px solid #ccc;padding-bottom:.2em;
+margin-top:1.8em}h3{margin-top:1.4em}
+nav.toc{background:#f6f7f9;border:1px solid #dde;border-radius:6px;padding:.6em 1.2em;
+margin:1em 0}nav.toc ol{margin:.3em 0;padding-left:1.4em}nav.toc li{margin:.15em 0}
+.scroll{overflow-x:auto;-webkit-overflow-scrolling:touch;max-width:100%}
+table{border-collapse:collapse;margin:.8em 0}
+td,th{border:1px solid #bbb;padding:.3em .6em;text-align:right;vertical-align:top}
+th{background:#eee}td:first-child,th:first-child{text-align:left}
+td.text,th.text{text-align:left}
+img{max-width:100%;height:auto;border:1px solid #ddd}figure{margin:1em 0}
+figcaption{color:#555;font-size:.9em}
+.pair{display:flex;gap:1em;flex-wrap:wrap;align-items:flex-start}
+.pair img{flex:1 1 300px;min-width:0}
+.note{color:#555;font-size:.92em}code{background:#f4f4f4;padding:0 .2em}
+pre{background:#f4f4f4;padding:.6em;overflow-x:auto}
+@media (max-width:600px){body{margin:.8em auto;padding:0 .7em}h1{font-size:1.35em}
+td,th{padding:.25em .4em}}"""
 
 
 def _fmt(x, nd=4):
@@ -454,6 +477,22 @@ def _fmt(x, nd=4):
     if isinstance(x, bool):
         return "yes" if x else "no"
     return f"{x:.{nd}g}"
+
+
+def _deg(x, nd=4):
+    """An angle in radians, shown in degrees."""
+    return "&ndash;" if x is None else f"{math.degrees(x):.{nd}g}&deg;"
+
+
+#: Units of the page (HTML): the paper's, ``m = a = g = 1``.
+_T = "&radic;(a/g)"
+_W = "&radic;(g/a)"
+
+
+def _img(src: str, alt: str, width: int | None = None) -> str:
+    """An image that opens at full size when tapped (a phone shrinks it to the screen)."""
+    w = f' width="{width}"' if width else ""
+    return f'<a href="{src}"><img src="{src}" alt="{html.escape(alt)}"{w}></a>'
 
 
 def _euler_block(ed: dict) -> str:
@@ -465,115 +504,193 @@ def _euler_block(ed: dict) -> str:
         for key, name in (("alpha", "tilt &alpha;"), ("Omega", "precession rate &Omega;"),
                           ("contact_speed", "contact-point speed")))
     lo, hi = ed["fit_window_alpha"]
-    return f"""<h2>Euler's disk</h2>
+    alpha_end = ed.get("alpha_end")
+    at = f"&alpha; = {_deg(alpha_end, 3)} at " if alpha_end is not None else ""
+    return f"""<h2 id="euler-disk">Euler's disk</h2>
 <p>The commercial toy (radius {p['radius_m'] * 1e3:.4g} mm, thickness
 {p['thickness_m'] * 1e3:.4g} mm, so h = {p['h']:.4g}; mass {p['mass_kg']:.3g} kg) started on
-its spin-in-place steady motion at tilt &alpha;<sub>0</sub> = &pi;/2 &minus; &theta;<sub>0</sub>
-= {p['alpha0']:.3g} rad and run to its end with creep friction (&mu; = {p['mu']:.3g}, creep
+its spin-in-place steady motion at tilt &alpha;<sub>0</sub> = 90&deg; &minus; &theta;<sub>0</sub>
+= {_deg(p['alpha0'], 3)} and run to its end with creep friction (&mu; = {p['mu']:.3g}, creep
 coefficient {p['creep']:.4g}) and rolling resistance (length {p['rolling_resistance']:.3g}
-a); <code>rollingdisk euler-disk</code>, <code>docs/friction.md</code>. End: <b>{ed['end']}</b>
-at t = {_fmt(ed['t_end_s'])} s (status <code>{html.escape(ed['status'])}</code>; the adiabatic
+a); <code>rollingdisk euler-disk</code>, <code>docs/friction.md</code>. End: <b>{ed['end']}</b>,
+{at}t = {_fmt(ed['t_end_s'])} s (status <code>{html.escape(ed['status'])}</code>; the adiabatic
 decay along the steady family predicts {_fmt(ed['predicted_t_end_s'])} s); energy
 balance {_fmt(ed['energy_balance'], 2)}; {ed['n_steps']} steps in {ed['wall_time_s']:.1f} s.
-Exponents against t<sub>0</sub> &minus; t over &alpha; in ({lo:g}, {hi:g}), fitted with
+Exponents against t<sub>0</sub> &minus; t over &alpha; in ({lo:g}, {hi:g}) rad, fitted with
 t<sub>0</sub> = {_fmt(ed['t0_s'])} s, beside those of the adiabatic decay along the steady
-family:</p>
-<table><tr><th>quantity</th><th>fitted</th><th>predicted</th></tr>
-{rows}</table>
-<img src="euler_disk.png" alt="Euler's disk: tilt, precession rate and contact-point speed">"""
+family (an exponent has no unit):</p>
+<div class="scroll"><table><tr><th>quantity</th><th>fitted</th><th>predicted</th></tr>
+{rows}</table></div>
+{_img("euler_disk.png", "Euler's disk: tilt, precession rate and contact-point speed")}"""
 
 
-def _index_html(h: float, thr: dict, motions: dict, names: list) -> str:
-    e = html.escape
+def _units_paragraph(h) -> str:
+    """The page's units, and the SI conversion when the disk has a physical scale."""
+    text = (f"Units: the paper's, m = a = g = 1: lengths in a (the radius), times in {_T}, "
+            f"angular speeds in {_W}, &varpi;&sup2; in g/a, forces in mg, energies in mga; "
+            "angles in degrees (the JSON files keep radians).")
+    a = getattr(h, "radius", None)
+    if a is not None:
+        T = math.sqrt(a / h.gravity)
+        text += (f" For this disk (a = {a * 1e3:.4g} mm, g = {h.gravity:.4g} m/s&sup2;): "
+                 f"{_T} = {T:.4g} s, {_W} = {1.0 / T:.4g} rad/s, a = {a:.4g} m; the plots "
+                 "are labelled in SI units.")
+    return f'<p class="note">{text}</p>'
+
+
+#: Sections of the page: (anchor, title) for the table of contents.
+_SECTIONS = (("thresholds", "Stability thresholds"),
+             ("existence", "Where steady circles exist"),
+             ("stability", "Stability of steady circles"),
+             ("all-omega30", "Stable for every &omega;<sub>30</sub>"),
+             ("motions", "Two steady circles, simulated"),
+             ("exact", "The stable circle at finite amplitude"),
+             ("euler-disk", "Euler's disk"),
+             ("learn-more", "Learn more"),
+             ("files", "Files"))
+
+
+def _toc() -> str:
+    items = "\n".join(f'<li><a href="#{a}">{t}</a></li>' for a, t in _SECTIONS)
+    return f'<nav class="toc" aria-label="Contents"><b>Contents</b><ol>\n{items}\n</ol></nav>'
+
+
+def _thresholds_table(thr: dict) -> str:
+    """One row per steady motion; the threshold of |omega20| and of |omega30| in columns of
+    their own (each row has one of them)."""
     rows = [
-        ("rough", "straight line (SE position), eq. (42)", "&omega;<sub>20</sub>&sup2; &gt;",
+        ("rough", "straight line in the SE position", "42", "omega20",
          thr["rough"]["straight_line_omega20_sq"]),
-        ("rough", "circle in the SE position, eq. (43)", "&omega;<sub>30</sub>&sup2; &gt;",
+        ("rough", "circle in the SE position", "43", "omega30",
          thr["rough"]["se_circle_omega30_sq"]),
-        ("smooth", "straight line, eq. (53)", "&omega;<sub>20</sub>&sup2; &gt;",
-         thr["smooth"]["straight_line_omega20_sq"]),
-        ("smooth", "spin in place, eq. (57)", "&omega;<sub>30</sub>&sup2; &gt;",
-         thr["smooth"]["spin_omega30_sq"]),
+        ("smooth", "straight line", "53", "omega20", thr["smooth"]["straight_line_omega20_sq"]),
+        ("smooth", "spin in place", "57", "omega30", thr["smooth"]["spin_omega30_sq"]),
     ]
-    thr_rows = "\n".join(
-        f"<tr><td>{g}</td><td>{what}</td><td>{cond} {_fmt(v)}</td>"
-        f"<td>{_fmt(math.sqrt(v))}</td></tr>" for g, what, cond, v in rows)
+
+    def cell(which, key, v):
+        if which != key:
+            return '<td class="empty">&ndash;</td>'
+        sym = "&omega;<sub>20</sub>" if key == "omega20" else "&omega;<sub>30</sub>"
+        return (f'<td>{_fmt(math.sqrt(v))} <span class="note">({sym}&sup2; &gt; '
+                f'{_fmt(v)})</span></td>')
+
+    body = "\n".join(
+        f"<tr><td>{g}</td><td class=\"text\">{what}</td><td>({eq})</td>"
+        f"{cell('omega20', key, v)}{cell('omega30', key, v)}</tr>"
+        for g, what, eq, key, v in rows)
+    return f"""<div class="scroll"><table>
+<tr><th>ground</th><th class="text">steady motion</th><th>eq.</th>
+<th>stable if |&omega;<sub>20</sub>| &gt;<br>[{_W}]</th>
+<th>stable if |&omega;<sub>30</sub>| &gt;<br>[{_W}]</th></tr>
+{body}</table></div>"""
+
+
+def _learn_more() -> str:
+    return """<h2 id="learn-more">Learn more</h2>
+<p>The documentation (notation and units, the equations and their errata, simulation,
+friction, exact motions, sweeps, the gallery) is built from the project's
+<code>docs/</code> folder; in a checkout, with the <code>docs</code> extra:</p>
+<pre><code>pip install -e ".[docs]"
+python -m sphinx -b html docs docs/_build/html</code></pre>
+<p>and then open <code>docs/_build/html/index.html</code>. To explore the steady motions of
+any disk interactively (click a map, see the motion in 3D, change h, the ground, the
+friction), run</p>
+<pre><code>rollingdisk explore</code></pre>
+<p>which opens the explorer in the web browser (<code>docs/explorer.md</code>). This page
+itself is <code>rollingdisk atlas --out DIR</code>; <code>rollingdisk --help</code> lists the
+other commands.</p>"""
+
+
+def _index_html(h, thr: dict, motions: dict, names: list) -> str:
+    e = html.escape
+    hv = check_h(h)  # h, or a Disk with or without a physical scale
 
     def motion_block(kind):
         m = motions[kind]
-        verdict = (f"stable: &varpi;&sup2; = {_fmt(m['varpi2'])}, &varpi; = "
-                   f"{_fmt(m['varpi'])} (period {_fmt(m['period'])}); the simulation "
-                   f"oscillates at {_fmt(m['measured'])}" if m["stable"] else
-                   f"unstable: &varpi;&sup2; = {_fmt(m['varpi2'])}, growth rate "
-                   f"&radic;(&minus;&varpi;&sup2;) = {_fmt(m['growth_rate'])}; the simulation "
-                   f"grows at {_fmt(m['measured'])}")
+        verdict = (f"stable: &varpi;&sup2; = {_fmt(m['varpi2'])} g/a, &varpi; = "
+                   f"{_fmt(m['varpi'])} {_W} (period {_fmt(m['period'])} {_T}); the "
+                   f"simulation oscillates at {_fmt(m['measured'])} {_W}" if m["stable"] else
+                   f"unstable: &varpi;&sup2; = {_fmt(m['varpi2'])} g/a, growth rate "
+                   f"&radic;(&minus;&varpi;&sup2;) = {_fmt(m['growth_rate'])} {_W}; the "
+                   f"simulation grows at {_fmt(m['measured'])} {_W}")
         return f"""
-<h3>{kind.capitalize()} steady circle</h3>
-<table><tr><th>&theta;<sub>0</sub> [rad]</th><th>&Omega;<sub>0</sub></th>
-<th>&omega;<sub>20</sub></th><th>&omega;<sub>30</sub></th><th>r<sub>C</sub></th>
-<th>r<sub>P</sub></th></tr>
-<tr><td>{_fmt(m['theta0'])}</td><td>{_fmt(m['Omega0'])}</td><td>{_fmt(m['omega20'])}</td>
-<td>{_fmt(m['omega30'])}</td><td>{_fmt(m['r_C'])}</td><td>{_fmt(m['r_P'])}</td></tr></table>
+<h3 id="{kind}">{kind.capitalize()} steady circle</h3>
+<div class="scroll"><table><tr><th>&theta;<sub>0</sub></th><th>&Omega;<sub>0</sub> [{_W}]</th>
+<th>&omega;<sub>20</sub> [{_W}]</th><th>&omega;<sub>30</sub> [{_W}]</th>
+<th>r<sub>C</sub> [a]</th><th>r<sub>P</sub> [a]</th></tr>
+<tr><td>{_deg(m['theta0'])}</td><td>{_fmt(m['Omega0'])}</td><td>{_fmt(m['omega20'])}</td>
+<td>{_fmt(m['omega30'])}</td><td>{_fmt(m['r_C'])}</td><td>{_fmt(m['r_P'])}</td></tr>
+</table></div>
 <p>Closed form (section 4.1): {verdict}. Simulated from the steady state with a kick
-d&theta;/dt(0) = {_fmt(m['kick'], 2)} until t = {_fmt(m['t_end'])} (status
+d&theta;/dt(0) = {_fmt(m['kick'], 2)} {_W} until t = {_fmt(m['t_end'])} {_T} (status
 <code>{e(m['status'])}</code>):
-largest |&theta; &minus; &theta;<sub>0</sub>| = {_fmt(m['max_theta_dev'], 3)}, largest energy
+largest |&theta; &minus; &theta;<sub>0</sub>| = {_deg(m['max_theta_dev'], 3)}, largest energy
 error {_fmt(m['energy_error'], 2)} mga.</p>
-<div class="pair"><img src="motion_{kind}.png" alt="{kind} motion plots" width="620">
-<img src="motion_{kind}.gif" alt="{kind} motion animation" width="350"></div>"""
+<div class="pair">{_img(f"motion_{kind}.png", f"{kind} motion plots", 620)}
+{_img(f"motion_{kind}.gif", f"{kind} motion animation", 350)}</div>"""
 
     ex = motions["exact"]
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
-<title>rollingdisk atlas, h = {h:.4g}</title><style>{_CSS}</style></head><body>
-<h1>Atlas of a disk of half-thickness h = {h:.4g}</h1>
-<p>A homogeneous disk of radius a and thickness 2h&nbsp;=&nbsp;{2 * h:.4g}&nbsp;a on a horizontal
-plane, after M. Batista, <i>Steady Motion of a Rigid Disk of Finite Thickness on a Horizontal
-Plane</i>. Units: m = a = g = 1 (time in &radic;(a/g)). &theta;<sub>0</sub> is the tilt from the
-vertical, &Omega;<sub>0</sub> the rate at which the disk turns about the vertical,
-&omega;<sub>30</sub> = &Omega;<sub>0</sub> cos&theta;<sub>0</sub> (eq. 3), r<sub>C</sub> the
-signed radius of the circle of the centre C (positive: the disk leans toward the centre A of
-the circle). The static equilibrium (SE) tilt is tan&theta;<sub>0</sub> = h,
-&theta;<sub>0</sub> = {math.atan(h):.4g} rad.
-All numbers come from the library (formulas derived and checked; see <code>docs/errata.md</code>
-for where they differ from the printed paper).</p>
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>rollingdisk atlas, h = {hv:.4g}</title><style>{_CSS}</style></head><body>
+<h1>Atlas of a disk of half-thickness h = {hv:.4g}</h1>
+<p>A homogeneous disk of radius a and thickness 2h&nbsp;=&nbsp;{2 * hv:.4g}&nbsp;a on a
+horizontal plane, after M. Batista, <i>Steady Motion of a Rigid Disk of Finite Thickness on a
+Horizontal Plane</i>. &theta;<sub>0</sub> is the tilt from the vertical, &Omega;<sub>0</sub>
+the rate at which the disk turns about the vertical, &omega;<sub>20</sub> its spin about its
+own axis (eq. 2; on a straight line, the rolling rate), &omega;<sub>30</sub> =
+&Omega;<sub>0</sub> cos&theta;<sub>0</sub> (eq. 3), r<sub>C</sub> the signed radius of the
+circle of the centre C (positive: the disk leans toward the centre A of the circle). The
+static equilibrium (SE) tilt is tan&theta;<sub>0</sub> = h, &theta;<sub>0</sub> =
+{_deg(math.atan(hv))}. All numbers come from the library (formulas derived and checked; see
+<code>docs/errata.md</code> for where they differ from the printed paper).</p>
+{_units_paragraph(h)}
+{_toc()}
 
-<h2>Stability thresholds</h2>
-<table><tr><th>ground</th><th>steady motion</th><th>stable if</th><th>threshold of |&omega;|</th>
-</tr>
-{thr_rows}</table>
+<h2 id="thresholds">Stability thresholds</h2>
+<p>The steady motions whose stability depends on one rate only. A straight line is stable
+when the disk spins fast enough about its own axis (|&omega;<sub>20</sub>| above the
+threshold), a circle in the SE position and the spin in place when it turns fast enough
+(|&omega;<sub>30</sub>| above the threshold). The squares are in
+<code>thresholds.json</code>.</p>
+{_thresholds_table(thr)}
 
-<h2>Where steady circles exist</h2>
-<p>Rough ground: in the (&theta;<sub>0</sub>, r<sub>C</sub>) plane a steady circle exists
-where &Omega;<sub>0</sub>&sup2; of eq. (31) is positive; dark: none, gray: it exists but is
-unstable (&varpi;&sup2; &lt; 0), white: stable. The red curve is r<sub>C</sub>* of eq. (32),
-where the denominator of eq. (31) vanishes. Smooth ground: there is no friction, so the centre
-C cannot move on a circle; every steady circle has r<sub>C</sub> = 0 (the contact point P
-turns about C at the radius r<sub>P</sub> = y<sub>P0</sub>), for every &theta;<sub>0</sub> and
-every &Omega;<sub>0</sub>.</p>
-<img src="existence.png" alt="existence maps">
+<h2 id="existence">Where steady circles exist</h2>
+<p><b>Rough ground</b> (rolling without slip): in the (&theta;<sub>0</sub>, r<sub>C</sub>)
+plane a steady circle exists where &Omega;<sub>0</sub>&sup2; of eq. (31) is positive; dark:
+none, gray: it exists but is unstable (&varpi;&sup2; &lt; 0), white: stable. The red curve is
+r<sub>C</sub>* of eq. (32), where the denominator of eq. (31) vanishes.</p>
+{_img("existence.png", "existence map on rough ground")}
+<p><b>Smooth ground</b> (no friction) needs no map: the only horizontal force on the disk is
+zero, so its centre C moves in a straight line, and in a steady circle C is at rest
+(r<sub>C</sub> = 0). For every tilt 0&deg; &lt; &theta;<sub>0</sub> &lt; 90&deg; and every
+turning rate &Omega;<sub>0</sub> &ne; 0 there is exactly one steady circle (&omega;<sub>20</sub>
+from eq. (54)): the contact point P runs round C on a circle of radius |y<sub>P0</sub>| = |sin
+&theta;<sub>0</sub> &minus; h cos &theta;<sub>0</sub>|, and the disk presses on the ground with
+its weight. Which of these circles are stable is the right-hand map of the next section.</p>
 
-<h2>Stability of steady circles</h2>
+<h2 id="stability">Stability of steady circles</h2>
 <p>For every &theta;<sub>0</sub> and every &omega;<sub>30</sub> &ne; 0 a steady circle exists
 on either ground (&omega;<sub>20</sub> from eq. (44) or (54)). Gray: &varpi;&sup2; &lt; 0
 (unstable), white: stable. The dotted line is the uniform bound above which every steady
-circle is stable whatever h and &theta;<sub>0</sub>: &omega;<sub>30</sub>&sup2; = 1 on rough
-ground, &omega;<sub>30</sub>&sup2; = 4 on smooth ground (the paper's conclusion prints 2, but
-its own eq. (57) at h = 0 needs 4; see <code>docs/figures.md</code>).</p>
-<img src="stability.png" alt="stability maps">
+circle is stable whatever h and &theta;<sub>0</sub>: &omega;<sub>30</sub>&sup2; = g/a on
+rough ground, &omega;<sub>30</sub>&sup2; = 4 g/a on smooth ground (the paper's conclusion
+prints 2, but its own eq. (57) at h = 0 needs 4; see <code>docs/figures.md</code>).</p>
+{_img("stability.png", "stability maps")}
 <p>The same along a few vertical lines of these maps: &varpi;&sup2; against
 &omega;<sub>30</sub>. Where &varpi;&sup2; &gt; 0, &varpi; is the angular frequency of the small
 oscillation of the tilt; where &varpi;&sup2; &lt; 0, &radic;(&minus;&varpi;&sup2;) is the rate at
 which a disturbance grows.</p>
-<img src="varpi2.png" alt="varpi squared against omega30">
+{_img("varpi2.png", "varpi squared against omega30")}
 
-<h2>Stable for every &omega;<sub>30</sub></h2>
+<h2 id="all-omega30">Stable for every &omega;<sub>30</sub></h2>
 <p>White: at this (&theta;<sub>0</sub>, h) the steady circle is stable whatever
 &omega;<sub>30</sub> (conditions (46) and (59); the paper's Figures 5 and 7). The blue line
 marks this disk.</p>
-<img src="all_omega30.png" alt="regions stable for every omega30">
+{_img("all_omega30.png", "regions stable for every omega30")}
 
-<h2>Two steady circles, simulated</h2>
+<h2 id="motions">Two steady circles, simulated</h2>
 <p>Each motion starts on the steady circle with a small kick d&theta;/dt, and is integrated
 with the full nonlinear equations (rough ground: eqs. (1), (2), (37), (38)). The plots show
 the paths of C and of the contact point P, &theta;(t), the energy error and the contact force
@@ -583,24 +700,26 @@ plane is the path of P.</p>
 {motion_block("stable")}
 {motion_block("unstable")}
 
-<h2>The stable circle at finite amplitude: the exact motion</h2>
+<h2 id="exact">The stable circle at finite amplitude: the exact motion</h2>
 <p>On rough and smooth ground the disk is integrable: &omega;<sub>2</sub>,
 &omega;<sub>3</sub> and (d&theta;/dt)&sup2; are functions of &theta; alone, and time,
 &psi; and the contact point's path follow by quadrature (<code>rollingdisk exact</code>,
-<code>docs/exact.md</code>). Kicked by d&theta;/dt(0) = {_fmt(ex['kick'], 3)},
-the stable circle nutates between &theta; = {_fmt(ex['theta_min'], 6)} and
-{_fmt(ex['theta_max'], 6)} with period {_fmt(ex['period'], 8)}
-(linear theory: 2&pi;/&varpi; = {_fmt(ex['linear_period'], 8)}), the frame
-turning by &Delta;&psi; = {_fmt(ex['delta_psi'], 6)} per period. Left: &theta;(t)
+<code>docs/exact.md</code>). Kicked by d&theta;/dt(0) = {_fmt(ex['kick'], 3)} {_W},
+the stable circle nutates between &theta; = {_deg(ex['theta_min'], 6)} and
+{_deg(ex['theta_max'], 6)} with period {_fmt(ex['period'], 8)} {_T}
+(linear theory: 2&pi;/&varpi; = {_fmt(ex['linear_period'], 8)} {_T}), the frame
+turning by &Delta;&psi; = {_deg(ex['delta_psi'], 6)} per period. Left: &theta;(t)
 over one period; middle: the contact point over 20 periods; right: the backbone, frequency
 against amplitude, which starts at &varpi; and reaches
-{_fmt(ex['frequency_at_largest'], 5)} at amplitude
-{_fmt(ex['largest_amplitude'], 3)}.</p>
-<img src="exact.png" alt="exact motion: theta over a period, rosette, backbone">
+{_fmt(ex['frequency_at_largest'], 5)} {_W} at amplitude
+{_deg(ex['largest_amplitude'], 3)}.</p>
+{_img("exact.png", "exact motion: theta over a period, rosette, backbone")}
 
 {_euler_block(motions["euler_disk"])}
 
-<h2>Files</h2>
+{_learn_more()}
+
+<h2 id="files">Files</h2>
 <p class="note">{" &middot; ".join(f'<a href="{e(n)}">{e(n)}</a>' for n in names)}</p>
 </body></html>
 """

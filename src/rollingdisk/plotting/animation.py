@@ -28,7 +28,7 @@ import numpy as np
 
 from rollingdisk.model.disk import check_h
 from rollingdisk.model.geometry import _geometry
-from rollingdisk.plotting.plots import check_dpi, trajectory_series
+from rollingdisk.plotting.plots import check_dpi, disk_of, si_factor, trajectory_series
 from rollingdisk.util.checks import check_int, check_real
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
@@ -333,6 +333,10 @@ def _scene(traj, fig, n_frames: int, title: str | None):
     (x0, x1), (y0, y1), (z0, z1) = _limits(traj, frames)
     ax = fig.add_subplot(1, 1, 1, projection="3d")
     head = title if title is not None else f"{traj.ground} ground, h = {traj.disk.h:.4g}"
+    # the clock in the title: seconds when the disk has a physical scale, else sqrt(a/g)
+    ft = si_factor(disk_of(traj), "time")
+    clock = ((lambda ti: f"t = {ti * ft:6.2f} s") if ft != 1.0
+             else (lambda ti: f"t = {ti:6.2f} √(a/g)"))
 
     def draw(i):
         ti, pose = tf[i], frames[i]
@@ -356,7 +360,7 @@ def _scene(traj, fig, n_frames: int, title: str | None):
         ax.set_zlim(z0, z1)
         ax.set_box_aspect((x1 - x0, y1 - y0, z1 - z0))
         ax.view_init(elev=28, azim=-60)
-        ax.set_title(f"{head}   t = {ti:6.2f}", fontsize=9)
+        ax.set_title(f"{head}   {clock(ti)}", fontsize=9)
         return []
 
     return tf, draw

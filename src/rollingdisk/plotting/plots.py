@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from rollingdisk.model.disk import check_ground, check_h
+from rollingdisk.model.disk import check_ground, check_h, h_of
 from rollingdisk.theory.regions import (
     NO_MOTION,
     STABLE,
@@ -58,6 +58,10 @@ __all__ = [
     "plot_trajectory",
     "trajectory_series",
     "plot_euler_disk",
+    "euler_disk_title",
+    "disk_of",
+    "si_factor",
+    "axis_label",
     "plot_nonlinear_map",
     "plot_basin_map",
     "plot_exact_theta",
@@ -71,15 +75,94 @@ CLASS_COLORS = ("#3a3a3a", "#b4b4b4", "#ffffff")
 CLASS_LABELS = ("no steady motion ($\\Omega_0^2<0$)", "possible, unstable ($\\varpi^2<0$)",
                 "stable ($\\varpi^2>0$)")
 
-#: Axis labels in the paper's symbols (matplotlib mathtext).
+#: Axis labels in the paper's symbols (matplotlib mathtext), with the paper's units
+#: (``m = a = g = 1``).  Angles are shown in degrees on every axis (the data stay in radians
+#: where the library computes in radians, :func:`_show_degrees`); the plot functions switch
+#: lengths, times and rates to SI units when their disk has a physical scale
+#: (:func:`axis_label`).
 LABELS = {
-    "theta0": r"$\theta_0$ [rad]",
+    "theta0": r"$\theta_0$ [deg]",
     "theta0_deg": r"$\theta_0$ [deg]",
-    "r_C": r"$r_C$",
-    "h": r"$h$",
-    "omega30": r"$\omega_{30}$",
-    "varpi2": r"$\varpi^2$",
+    "r_C": r"$r_C$ [$a$]",
+    "h": r"$h$ (half-thickness / radius)",
+    "omega30": r"$\omega_{30}$ [$\sqrt{g/a}$]",
+    "varpi2": r"$\varpi^2$ [$g/a$]",
 }
+
+#: Units of each kind of quantity on an axis (mathtext): (the paper's units, SI).  Kinds as
+#: in :data:`rollingdisk.model.units.KINDS`.
+AXIS_UNITS = {
+    "time": (r"$\sqrt{a/g}$", "s"),
+    "length": (r"$a$", "m"),
+    "speed": (r"$\sqrt{ag}$", "m/s"),
+    "angular_speed": (r"$\sqrt{g/a}$", "rad/s"),
+    "rate_sq": (r"$g/a$", r"rad$^2$/s$^2$"),
+    "force": (r"$mg$", "N"),
+    "energy": (r"$mga$", "J"),
+}
+
+
+def disk_of(obj):
+    """The :class:`~rollingdisk.Disk` of ``obj`` (a disk, or a result with a ``disk``
+    attribute: trajectory, steady or exact motion), or ``None`` (a plain ``h``)."""
+    from rollingdisk.model.disk import Disk
+
+    if isinstance(obj, Disk):
+        return obj
+    d = getattr(obj, "disk", None)
+    return d if isinstance(d, Disk) else None
+
+
+def si_factor(disk, kind: str) -> float:
+    """What a quantity of ``kind`` in the paper's units is multiplied by to show it on an
+    axis: its SI conversion when ``disk`` has the physical scale it needs (times, lengths,
+    speeds and rates the radius, forces the mass, energies both), else 1."""
+    from rollingdisk.model.units import can_convert, to_si
+
+    if disk is None or not can_convert(disk, kind):
+        return 1.0
+    return float(to_si(disk, kind, 1.0))
+
+
+def axis_label(symbol: str, kind: str, disk=None) -> str:
+    """``"<symbol> [<unit>]"``: SI units when ``disk`` converts ``kind``
+    (:func:`si_factor`), else the paper's units (``[\\sqrt{a/g}]``, ``[a]``, ...)."""
+    paper, si = AXIS_UNITS[kind]
+    return f"{symbol} [{si if si_factor(disk, kind) != 1.0 else paper}]"
+
+
+def _tick(v: float) -> str:
+    """A tick label without floating-point noise (``0.30000000000000004`` -> ``0.3``)."""
+    return f"{float(f'{v:.6g}'):g}"
+
+
+def _show_scaled(axis, factor: float, ticks=None) -> None:
+    """Show the data of ``axis`` (a matplotlib Axis, in the paper's units or radians)
+    multiplied by ``factor``: round tick values in the shown units, labelled in them.
+    The data, and so every artist and :class:`MapPlot` grid, stay as computed.
+    ``ticks``: explicit tick positions in data units (for symlog axes)."""
+    if factor == 1.0 and ticks is None:
+        return
+    from matplotlib.ticker import FixedLocator, FuncFormatter, Locator, MaxNLocator
+
+    class _ScaledLocator(Locator):
+        def __init__(self):
+            self._inner = MaxNLocator(nbins=6, steps=[1, 1.5, 2, 2.5, 3, 5, 10])
+
+        def __call__(self):
+            return self.tick_values(*self.axis.get_view_interval())
+
+        def tick_values(self, vmin, vmax):
+            return np.asarray(self._inner.tick_values(vmin * factor, vmax * factor)) / factor
+
+    axis.set_major_locator(FixedLocator(ticks) if ticks is not None else _ScaledLocator())
+    axis.set_major_formatter(FuncFormatter(lambda v, _: _tick(v * factor)))
+
+
+def _show_degrees(axis) -> None:
+    """Label an axis whose data are angles in radians in degrees (ticks every 15 deg on
+    a quarter turn)."""
+    _show_scaled(axis, 180.0 / math.pi)
 
 
 @dataclass(frozen=True)
@@ -219,13 +302,23 @@ def _class_cmap():
     return ListedColormap(CLASS_COLORS), BoundaryNorm([-0.5, 0.5, 1.5, 2.5], 3)
 
 
-def _class_legend(ax, codes_present=(NO_MOTION, UNSTABLE, STABLE), labels=None, **kw):
+def _class_handles(codes_present=(NO_MOTION, UNSTABLE, STABLE), labels=None) -> list:
     from matplotlib.patches import Patch
 
     labels = labels or {}
-    handles = [Patch(facecolor=CLASS_COLORS[c], edgecolor="k", linewidth=0.5,
-                     label=labels.get(c, CLASS_LABELS[c])) for c in codes_present]
-    return ax.legend(handles=handles, **kw)
+    return [Patch(facecolor=CLASS_COLORS[c], edgecolor="k", linewidth=0.5,
+                  label=labels.get(c, CLASS_LABELS[c])) for c in codes_present]
+
+
+#: Font size of legends [points]: 8 pt is 11 px at 100 dpi.
+LEGEND_FONTSIZE = 8
+
+
+def _legend_below(ax, handles, ncol: int = 2):
+    """One legend under the axes (never over the regions it explains)."""
+    return ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.16),
+                     ncol=ncol, fontsize=LEGEND_FONTSIZE, frameon=False,
+                     handlelength=1.6, columnspacing=1.2)
 
 
 def _theta_grid(n, theta_max=None):
@@ -266,10 +359,14 @@ def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200)
     exists only on the line ``r_C = 0`` (for every ``theta0`` and every ``Omega0``); the
     map shows the rest of the plane as "no steady motion" and the line itself.
 
+    The ``theta0`` axis is labelled in degrees (the grid ``x`` stays in radians); with a
+    :class:`~rollingdisk.Disk` of physical radius ``a`` the ``r_C`` axis is labelled in
+    metres (the grid ``y`` stays in units of ``a``).  The legend sits under the axes.
+
     Parameters
     ----------
-    h : float
-        Half-thickness, ``h >= 0``.
+    h : float or Disk
+        Half-thickness, ``h >= 0``, or a disk (its ``radius``, if set, gives SI labels).
     ground : {"rough", "smooth"}
     ax : matplotlib Axes, optional
     n : (int, int)
@@ -285,6 +382,7 @@ def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200)
     """
     from rollingdisk.theory.steady import r_C_star
 
+    disk = disk_of(h)
     h = check_h(h)
     check_ground(ground)
     ax = _axes(ax)
@@ -315,27 +413,30 @@ def plot_existence_map(h: float, ground: str = "rough", ax=None, *, n=(240, 200)
     if h > 0:
         artists["se"] = ax.axvline(math.atan(h), color="tab:blue", ls="--", lw=1.0,
                                    label=r"SE: $\tan\theta_0=h$")
+    f = si_factor(disk, "length")
     if r_C_scale == "symlog":
-        from matplotlib.ticker import FuncFormatter
-
         ax.set_yscale("symlog", linthresh=linthresh)
-        ticks = [t for t in (-100, -10, -1, -linthresh, 0, linthresh, 1, 10, 100)
-                 if lo <= t <= hi]
-        ax.set_yticks(ticks)
-        ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+        if f == 1.0:
+            shown = [-100, -10, -1, 0, 1, 10, 100]  # (+-linthresh crowded +-1)
+        else:  # decades of metres
+            shown = [0.0] + [s * 10.0 ** k / f for k in range(-6, 4) for s in (-1, 1)
+                             if 10.0 ** k / f > 1.5 * linthresh]
+        _show_scaled(ax.yaxis, f, sorted(t for t in shown if lo <= t <= hi))
+    else:
+        _show_scaled(ax.yaxis, f)
+    _show_degrees(ax.xaxis)
     ax.set_xlim(0.0, 0.5 * math.pi)
     ax.set_ylim(lo, hi)
     ax.set_xlabel(LABELS["theta0"])
-    ax.set_ylabel(LABELS["r_C"] + (f" (linear for $|r_C|<{linthresh:g}$)"
-                                   if r_C_scale == "symlog" else ""))
+    ax.set_ylabel(axis_label("$r_C$", "length", disk)
+                  + (f" (linear for $|r_C|<{linthresh * f:.3g}$)"
+                     if r_C_scale == "symlog" else ""))
     ax.set_title(title if title is not None else f"{ground} ground, $h = {h:.4g}$")
     if legend:
         labels = ({} if ground == "rough"
                   else {NO_MOTION: "no steady motion (no friction: C cannot circle)"})
-        leg1 = _class_legend(ax, present, labels, loc="lower left", fontsize="x-small",
-                             framealpha=0.9)
-        ax.add_artist(leg1)
-        ax.legend(loc="upper right", fontsize="x-small", framealpha=0.9)
+        lines = [a for k, a in artists.items() if k != "mesh"]
+        _legend_below(ax, _class_handles(present, labels) + lines)
     return MapPlot(ax, th, rc, codes, artists)
 
 
@@ -352,9 +453,14 @@ def plot_stability_map(h: float, ground: str, ax=None, *, n=(240, 200),
     ``omega30^2 = 4`` on smooth ground (the paper's conclusion prints ``2``, but its own
     section 4.2 puts the top of the surface ``varpi^2 = 0`` at ``omega30 = 2``, h = 0;
     see ``docs/figures.md``).
+
+    ``h`` may be a :class:`~rollingdisk.Disk`: with a physical radius the ``omega30`` axis
+    is labelled in rad/s (the grid ``y`` stays in units of ``sqrt(g/a)``); ``theta0`` is
+    labelled in degrees (the grid ``x`` stays in radians).
     """
     from rollingdisk.theory.oscillations import varpi2_circle
 
+    disk = disk_of(h)
     h = check_h(h)
     check_ground(ground)
     omega30_max = check_real("omega30_max", omega30_max, low=0.0, low_open=True)
@@ -378,20 +484,20 @@ def plot_stability_map(h: float, ground: str, ax=None, *, n=(240, 200),
         artists["uniform_bound"] = ax.axhline(
             bound, color="tab:purple", ls=":", lw=1.2,
             label=(r"$\omega_{30}^2=" + ("1" if ground == "rough" else "4")
-                   + r"$: stable above for all $h,\theta_0$"))
+                   + r"\,g/a$: stable above for all $h,\theta_0$"))
     if h > 0:
         artists["se"] = ax.axvline(math.atan(h), color="tab:blue", ls="--", lw=1.0,
                                    label=r"SE: $\tan\theta_0=h$")
+    _show_degrees(ax.xaxis)
+    _show_scaled(ax.yaxis, si_factor(disk, "angular_speed"))
     ax.set_xlim(0.0, 0.5 * math.pi)
     ax.set_ylim(0.0, omega30_max)
     ax.set_xlabel(LABELS["theta0"])
-    ax.set_ylabel(LABELS["omega30"])
+    ax.set_ylabel(axis_label(r"$\omega_{30}$", "angular_speed", disk))
     ax.set_title(title if title is not None else f"{ground} ground, $h = {h:.4g}$")
     if legend:
-        leg1 = _class_legend(ax, (UNSTABLE, STABLE), loc="center right", fontsize="x-small",
-                             framealpha=0.9)
-        ax.add_artist(leg1)
-        ax.legend(loc="upper right", fontsize="x-small", framealpha=0.9)
+        lines = [a for k, a in artists.items() if k in ("uniform_bound", "se")]
+        _legend_below(ax, _class_handles((UNSTABLE, STABLE)) + lines)
     return MapPlot(ax, th, w, codes, artists)
 
 
@@ -412,7 +518,7 @@ def plot_all_omega30_stable(ground: str, ax=None, *, n=(240, 200),
 
     check_ground(ground)
     if mark_h is not None:
-        mark_h = check_real("mark_h", mark_h, low=0.0)
+        mark_h = check_real("mark_h", h_of(mark_h), low=0.0)
         h_range = (h_range[0], max(h_range[1], 1.2 * mark_h))  # keep the marked disk in view
     ax = _axes(ax)
     t_lo, t_hi = theta0_deg_range
@@ -440,7 +546,10 @@ def plot_all_omega30_stable(ground: str, ax=None, *, n=(240, 200),
     ax.set_title(title if title is not None
                  else f"{ground} ground: stable for every $\\omega_{{30}}$ (white)")
     if asymptote or mark_h is not None:
-        ax.legend(loc="upper left", fontsize="x-small", framealpha=0.9)
+        _legend_below(ax, _class_handles((UNSTABLE, STABLE), {UNSTABLE: "unstable for some "
+                                          r"$\omega_{30}$", STABLE: r"stable for every "
+                                          r"$\omega_{30}$"})
+                      + [a for k, a in artists.items() if k != "mesh"])
     return MapPlot(ax, deg, hh, ok, artists)
 
 
@@ -486,6 +595,7 @@ def plot_varpi2_surface(ground: str, ax=None, *, n=(80, 80),
             artists[name] = ax.plot_surface(TH, H, np.ma.masked_invalid(Z), color=color,
                                             alpha=0.75, linewidth=0, antialiased=False,
                                             rcount=n[1], ccount=n[0])
+    _show_degrees(ax.xaxis)
     ax.set_xlabel(LABELS["theta0"])
     ax.set_ylabel(LABELS["h"])
     ax.set_zlabel(LABELS["omega30"])
@@ -508,10 +618,13 @@ def plot_varpi2_curves(h: float, ground: str, ax=None, *, theta0s=None,
     frequency of the small oscillation of the tilt, ``sqrt(-varpi^2)`` otherwise the rate
     at which a disturbance grows (eqs. 45 / 55 as corrected in the library).  By default
     the tilts are 0.1, the static-equilibrium tilt ``arctan h`` (if ``h > 0``), 0.5 and 1.0
-    rad.  Returns ``{"ax": ax, "lines": {theta0: Line2D}}``.
+    rad.  Returns ``{"ax": ax, "lines": {theta0: Line2D}}`` (the lines' data in the paper's
+    units; the axes are labelled in rad/s and rad^2/s^2 when ``h`` is a
+    :class:`~rollingdisk.Disk` with a physical radius).
     """
     from rollingdisk.theory.oscillations import varpi2_circle
 
+    disk = disk_of(h)
     h = check_h(h)
     check_ground(ground)
     ax = _axes(ax)
@@ -522,14 +635,17 @@ def plot_varpi2_curves(h: float, ground: str, ax=None, *, theta0s=None,
     for th in sorted(theta0s):
         with np.errstate(all="ignore"):
             v2 = np.asarray(varpi2_circle(h, ground, th, w), float)
-        label = f"$\\theta_0 = {th:.3g}$" + (" (SE)" if h > 0 and th == math.atan(h) else "")
+        label = (f"$\\theta_0 = {math.degrees(th):.3g}°$"
+                 + (" (SE)" if h > 0 and th == math.atan(h) else ""))
         (lines[th],) = ax.plot(w, v2, lw=1.2, label=label)
     ax.axhline(0.0, color="k", lw=0.8)
     ax.set_ylim(-3.0, 6.0)
     ax.set_xlim(0.0, omega30_max)
-    ax.set_xlabel(LABELS["omega30"])
-    ax.set_ylabel(LABELS["varpi2"])
-    ax.legend(loc="lower right", fontsize="x-small")
+    _show_scaled(ax.xaxis, si_factor(disk, "angular_speed"))
+    _show_scaled(ax.yaxis, si_factor(disk, "rate_sq"))
+    ax.set_xlabel(axis_label(r"$\omega_{30}$", "angular_speed", disk))
+    ax.set_ylabel(axis_label(r"$\varpi^2$", "rate_sq", disk))
+    ax.legend(loc="lower right", fontsize=LEGEND_FONTSIZE)
     ax.set_title(title if title is not None else f"{ground} ground, $h = {h:.4g}$")
     return {"ax": ax, "lines": lines}
 
@@ -562,8 +678,20 @@ def trajectory_series(traj, name: str) -> np.ndarray:
     raise ParameterError(f"unknown series {name!r}")
 
 
+def _time_axis(ax, disk) -> None:
+    """The time axis of a trajectory plot: data in units of ``sqrt(a/g)``, shown in seconds
+    when ``disk`` has a physical radius."""
+    _show_scaled(ax.xaxis, si_factor(disk, "time"))
+    ax.set_xlabel(axis_label("$t$", "time", disk))
+
+
 def plot_paths(traj, ax=None, *, title: str | None = None) -> dict:
-    """Paths of the centre C (projected on the plane) and of the contact point P (eq. 5)."""
+    """Paths of the centre C (projected on the plane) and of the contact point P (eq. 5).
+
+    Every trajectory plot labels its axes with units: the paper's (``t`` in ``sqrt(a/g)``,
+    lengths in ``a``, forces in ``m g``) or, when ``traj.disk`` has a physical scale, SI
+    (s, m, N; forces need the mass too).  The drawn data stay in the paper's units.
+    """
     ax = _axes(ax)
     XC, YC = trajectory_series(traj, "X_C"), trajectory_series(traj, "Y_C")
     XP, YP = trajectory_series(traj, "X_P"), trajectory_series(traj, "Y_P")
@@ -572,15 +700,20 @@ def plot_paths(traj, ax=None, *, title: str | None = None) -> dict:
     start = ax.scatter([XC[0], XP[0]], [YC[0], YP[0]], color=["tab:blue", "tab:red"],
                        marker="o", s=16, zorder=3)
     ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel(r"$X$")
-    ax.set_ylabel(r"$Y$")
-    ax.legend(loc="best", fontsize="x-small")
+    disk = disk_of(traj)
+    f = si_factor(disk, "length")
+    _show_scaled(ax.xaxis, f)
+    _show_scaled(ax.yaxis, f)
+    ax.set_xlabel(axis_label("$X$", "length", disk))
+    ax.set_ylabel(axis_label("$Y$", "length", disk))
+    ax.legend(loc="best", fontsize=LEGEND_FONTSIZE)
     ax.set_title(title if title is not None else "paths on the plane")
     return {"ax": ax, "C": lc, "P": lp, "start": start}
 
 
 def plot_theta(traj, ax=None, *, theta0: float | None = None, title: str | None = None) -> dict:
-    """Inclination ``theta(t)``; ``theta0`` draws the steady value."""
+    """Inclination ``theta(t)``; ``theta0`` [rad] draws the steady value.  The line holds
+    radians; the axis is labelled in degrees."""
     ax = _axes(ax)
     t = np.asarray(traj.t, float)
     (line,) = ax.plot(t, trajectory_series(traj, "theta"), color="k", lw=1.0,
@@ -589,9 +722,10 @@ def plot_theta(traj, ax=None, *, theta0: float | None = None, title: str | None 
     if theta0 is not None:
         out["theta0"] = ax.axhline(theta0, color="tab:blue", ls="--", lw=0.8,
                                    label=r"$\theta_0$")
-        ax.legend(loc="best", fontsize="x-small")
-    ax.set_xlabel(r"$t\ [\sqrt{a/g}]$")
-    ax.set_ylabel(r"$\theta$ [rad]")
+        ax.legend(loc="best", fontsize=LEGEND_FONTSIZE)
+    _time_axis(ax, disk_of(traj))
+    _show_degrees(ax.yaxis)
+    ax.set_ylabel(r"$\theta$ [deg]")
     ax.set_title(title if title is not None else "inclination")
     return out
 
@@ -602,9 +736,14 @@ def plot_energy_error(traj, ax=None, *, title: str | None = None) -> dict:
     t = np.asarray(traj.t, float)
     E = trajectory_series(traj, "E")
     (line,) = ax.plot(t, E - E[0], color="tab:green", lw=1.0)
-    ax.set_xlabel(r"$t\ [\sqrt{a/g}]$")
-    ax.set_ylabel(r"$E(t)-E(0)$ [$mga$]")
-    ax.ticklabel_format(axis="y", style="sci", scilimits=(-2, 2))
+    disk = disk_of(traj)
+    _time_axis(ax, disk)
+    fE = si_factor(disk, "energy")
+    if fE != 1.0:  # joules: tick labels such as 1e-15
+        _show_scaled(ax.yaxis, fE)
+    else:
+        ax.ticklabel_format(axis="y", style="sci", scilimits=(-2, 2))
+    ax.set_ylabel(axis_label("$E(t)-E(0)$", "energy", disk))
     ax.set_title(title if title is not None else "energy error")
     return {"ax": ax, "dE": line}
 
@@ -618,9 +757,11 @@ def plot_contact_forces(traj, ax=None, *, title: str | None = None) -> dict:
         (out[name],) = ax.plot(t, trajectory_series(traj, name), color=color, lw=1.0,
                                label=f"${name}$")
     ax.axhline(0.0, color="0.6", lw=0.6)
-    ax.set_xlabel(r"$t\ [\sqrt{a/g}]$")
-    ax.set_ylabel(r"force [$mg$]")
-    ax.legend(loc="best", fontsize="x-small")
+    disk = disk_of(traj)
+    _time_axis(ax, disk)
+    _show_scaled(ax.yaxis, si_factor(disk, "force"))
+    ax.set_ylabel(axis_label("force", "force", disk))
+    ax.legend(loc="best", fontsize=LEGEND_FONTSIZE)
     ax.set_title(title if title is not None else "contact force")
     return out
 
@@ -666,6 +807,19 @@ def _plane_axes(da):
     return x, da["h"].values, r"$h$"
 
 
+#: Sweep axes other than theta0 and h: (symbol, kind of quantity) for their labels.
+_SWEEP_AXES = {"omega30": (r"$\omega_{30}$", "angular_speed"),
+               "Omega0": (r"$\Omega_0$", "angular_speed"),
+               "omega0": (r"$\omega_0$", "angular_speed"),
+               "r_C": ("$r_C$", "length")}
+
+
+def _sweep_xlabel(dim: str) -> str:
+    """The label of a sweep's second axis, with the paper's unit (sweeps run in them)."""
+    symbol, kind = _SWEEP_AXES.get(dim, (dim, None))
+    return axis_label(symbol, kind) if kind else dim
+
+
 def plot_nonlinear_map(ds, ax=None) -> dict:
     """Simulated stability of a sweep (:func:`rollingdisk.sweep.runner.run_sweep`) over
     ``(theta0, omega30 | r_C | Omega0)`` or, for straight lines, ``(h, omega0)``: bounded /
@@ -688,7 +842,7 @@ def plot_nonlinear_map(ds, ax=None) -> dict:
     boundary = None
     if np.isfinite(v.values).sum() > 3 and len(th) > 1 and len(y) > 1:
         boundary = ax.contour(y, th, v.values, levels=[0.0], colors="k", linewidths=1.0)
-    ax.set_xlabel(ss.dims[1])
+    ax.set_xlabel(_sweep_xlabel(ss.dims[1]))
     ax.set_ylabel(ylabel)
     ax.set_title(f"{ds.attrs.get('ground', '')}: bounded (green), grew (orange), "
                  "guard (red); black: $\\varpi^2 = 0$", fontsize="small")
@@ -710,7 +864,7 @@ def plot_basin_map(ds, ax=None) -> dict:
     boundary = None
     if np.isfinite(v.values).sum() > 3 and len(th) > 1 and len(y) > 1:
         boundary = ax.contour(y, th, v.values, levels=[0.0], colors="w", linewidths=1.0)
-    ax.set_xlabel(kb.dims[1])
+    ax.set_xlabel(_sweep_xlabel(kb.dims[1]))
     ax.set_ylabel(ylabel)
     ax.set_title(f"{ds.attrs.get('ground', '')}: basin size", fontsize="small")
     return {"ax": ax, "mesh": mesh, "colorbar": cb, "boundary": boundary}
@@ -728,10 +882,16 @@ def plot_exact_theta(ex, ax=None, *, title: str | None = None) -> dict:
     (line,) = ax.plot(t, ex.theta(t), color="k", lw=1.2, label=r"$\theta(t)$ (quadrature)")
     for v, name in ((ex.theta_min, r"$\theta_{min}$"), (ex.theta_max, r"$\theta_{max}$")):
         ax.axhline(v, color="tab:blue", ls=":", lw=0.8)
-        ax.annotate(name, (t[-1], v), fontsize="x-small", ha="right", va="bottom")
-    ax.set_xlabel(r"$t\ [\sqrt{a/g}]$")
-    ax.set_ylabel(r"$\theta$ [rad]")
-    ax.set_title(title if title is not None else f"one period, T = {ex.period:.6g}")
+        ax.annotate(name, (t[-1], v), fontsize=LEGEND_FONTSIZE, ha="right", va="bottom")
+    disk = disk_of(ex)
+    _time_axis(ax, disk)
+    _show_degrees(ax.yaxis)
+    ax.set_ylabel(r"$\theta$ [deg]")
+    if title is None:
+        ft = si_factor(disk, "time")
+        title = (f"one period, $T$ = {ex.period * ft:.4g} s" if ft != 1.0 else
+                 rf"one period, $T$ = {ex.period:.6g} $\sqrt{{a/g}}$")
+    ax.set_title(title)
     return {"ax": ax, "theta": line}
 
 
@@ -746,16 +906,23 @@ def plot_rosette(ex, ax=None, *, n_periods: int = 20, title: str | None = None) 
     (line,) = ax.plot(X, Y, color="tab:red", lw=0.7)
     ax.plot(X[:1], Y[:1], "o", color="tab:red", ms=3)
     ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel(r"$X_P$")
-    ax.set_ylabel(r"$Y_P$")
+    disk = disk_of(ex)
+    f = si_factor(disk, "length")
+    _show_scaled(ax.xaxis, f)
+    _show_scaled(ax.yaxis, f)
+    ax.set_xlabel(axis_label("$X_P$", "length", disk))
+    ax.set_ylabel(axis_label("$Y_P$", "length", disk))
     ax.set_title(title if title is not None else
-                 rf"contact point, {n_periods} periods, $\Delta\psi$ = {ex.delta_psi:.4g}")
+                 rf"contact point, {n_periods} periods, $\Delta\psi$ = "
+                 f"{math.degrees(ex.delta_psi):.4g}°")
     return {"ax": ax, "path": line}
 
 
-def plot_backbone(bb, ax=None, *, title: str | None = None) -> dict:
+def plot_backbone(bb, ax=None, *, title: str | None = None, disk=None) -> dict:
     """Backbone curve (:func:`rollingdisk.theory.exact.backbone`): nutation frequency against
-    amplitude, tending to the linear ``varpi`` (eq. 39) at zero amplitude."""
+    amplitude, tending to the linear ``varpi`` (eq. 39) at zero amplitude.  Amplitude
+    labelled in degrees (data in radians); frequency in ``sqrt(g/a)``, or rad/s with
+    ``disk`` (or ``bb.disk``) of physical radius."""
     ax = _axes(ax)
     ok = np.isfinite(bb.frequency)
     (line,) = ax.plot(bb.amplitude[ok], bb.frequency[ok], "o-", color="k", ms=3, lw=1.0,
@@ -764,9 +931,12 @@ def plot_backbone(bb, ax=None, *, title: str | None = None) -> dict:
     if np.isfinite(bb.varpi):
         out["varpi"] = ax.axhline(bb.varpi, color="tab:blue", ls="--", lw=0.8,
                                   label=r"$\varpi$ (eq. 39)")
-    ax.set_xlabel(r"amplitude $(\theta_{max}-\theta_{min})/2$ [rad]")
-    ax.set_ylabel(r"$2\pi/T$")
-    ax.legend(loc="best", fontsize="x-small")
+    disk = disk_of(bb) if disk is None else disk
+    _show_degrees(ax.xaxis)
+    _show_scaled(ax.yaxis, si_factor(disk, "angular_speed"))
+    ax.set_xlabel(r"amplitude $(\theta_{max}-\theta_{min})/2$ [deg]")
+    ax.set_ylabel(axis_label(r"$2\pi/T$", "angular_speed", disk))
+    ax.legend(loc="best", fontsize=LEGEND_FONTSIZE)
     ax.set_title(title if title is not None else "backbone")
     return {**out}
 
@@ -783,7 +953,7 @@ def plot_exact(ex, fig=None, *, backbone=None, n_periods: int = 20,
     out = {"fig": fig, "axes": axs, "theta": plot_exact_theta(ex, axs[0]),
            "rosette": plot_rosette(ex, axs[1], n_periods=n_periods)}
     if backbone is not None:
-        out["backbone"] = plot_backbone(backbone, axs[2])
+        out["backbone"] = plot_backbone(backbone, axs[2], disk=disk_of(ex))
     if title:
         fig.suptitle(title)
     fig.tight_layout()
@@ -797,8 +967,23 @@ def _thin(n: int, k: int = 3000) -> np.ndarray:
     return np.unique(np.append(np.linspace(0, n - 1, k).astype(int), n - 1))
 
 
+def euler_disk_title(result) -> str:
+    """A figure title for Euler's disk run to its end, in one style: symbols with units,
+    SI first, the paper's time unit after (``"Euler's disk: fell flat, α = 0.001 rad at
+    t = 100.3 s (1623 √(a/g))"``)."""
+    r = result
+    words = {"fell-flat": "fell flat", "lift-off": "lifted off",
+             "edge-contact": "the other rim edge touched", "at-rest": "came to rest"}
+    what = words.get(r.end, r.end) if r.end is not None else f"stopped ({r.status})"
+    alpha = float(r.alpha[-1]) if np.size(r.alpha) else float("nan")
+    return (f"Euler's disk: {what}, α = {alpha:.3g} rad ({math.degrees(alpha):.3g}°) at "
+            f"t = {r.t_end_s:.4g} s ({r.t_end:.4g} √(a/g))")
+
+
 def plot_euler_disk(result, fig=None, *, title: str | None = None) -> dict:
     """Euler's disk run to its end (:func:`rollingdisk.friction.euler_disk.run_euler_disk`).
+
+    ``title``: by default :func:`euler_disk_title`; ``""`` for none.
 
     Left: the tilt ``alpha``, the precession rate ``Omega`` and the contact-point speed
     against time (seconds), the end marked.  Right: the same against ``t0 - t`` on log-log
@@ -818,8 +1003,8 @@ def plot_euler_disk(result, fig=None, *, title: str | None = None) -> dict:
     unit = r.toy.time_unit
     i = _thin(r.t.size)
     t = r.t[i] * unit
-    series = (("alpha", r"$\alpha$ [rad]", r.alpha, "C0"),
-              ("Omega", r"$\Omega$ [1/s]", r.Omega / unit, "C1"),
+    series = (("alpha", r"$\alpha$ [deg]", np.degrees(r.alpha), "C0"),
+              ("Omega", r"$\Omega$ [rad/s]", r.Omega / unit, "C1"),
               ("contact_speed", r"$v_P$ [m/s]", r.contact_speed
                * math.sqrt(r.toy.radius * r.toy.gravity), "C2"))
     lines = {}
@@ -860,6 +1045,7 @@ def plot_euler_disk(result, fig=None, *, title: str | None = None) -> dict:
         ax2.text(0.5, 0.5, "the fit window was not reached", ha="center",
                  transform=ax2.transAxes)
     ax2.set_title(r"log-log against $t_0 - t$", fontsize=9)
+    title = euler_disk_title(r) if title is None else title
     if title:
         fig.suptitle(title, fontsize=10)
     fig.tight_layout()

@@ -48,7 +48,7 @@ def write_euler_disk(result, out, *, dpi: int = 90):
     summary = result.summary()
     with atomic_dir(target) as tmp:
         fig = Figure(figsize=(10.0, 4.2))
-        plot_euler_disk(result, fig, title="Euler's disk: " + result.message)
+        plot_euler_disk(result, fig)  # title: euler_disk_title(result)
         fig.savefig(tmp / EULER_DISK_FILES[0], dpi=dpi)
         with open(tmp / EULER_DISK_FILES[1], "w", newline="") as fh:
             write_columns(fh, result.as_columns(), fmt="%.12g")
