@@ -270,9 +270,11 @@ def resolve_length(value, disk, option: str):
     if not isinstance(value, _Length):
         return value
     if disk.radius is None:
-        raise CLIError(f"{option} {value:g} m is a length with a unit: it needs a disk with a "
-                       "physical radius (--disk, --radius or --diameter); without one give "
-                       "it in units of the radius, a plain number")
+        from rollingdisk.util.errors import ParameterError
+
+        raise ParameterError(f"{option} {value:g} m is a length with a unit: it needs a disk "
+                             "with a physical radius (--disk, --radius or --diameter); "
+                             "without one give it in units of the radius, a plain number")
     return float(value) / disk.radius
 
 
