@@ -21,7 +21,7 @@ from rollingdisk.cli._args import (
     real,
     resolve_length,
 )
-from rollingdisk.cli._format import disk_line
+from rollingdisk.cli._format import disk_line, with_si
 
 
 def configure(sub):
@@ -94,7 +94,7 @@ def run(args) -> int:
                                 max_wall_time=args.max_wall_time, progress=bar)
     finally:
         bar.close()
-    summary = result.summary()
+    summary = _with_si(result.summary(), result.toy.disk)
     if args.out is not None:
         write_euler_disk(result, args.out)
         summary["out"] = args.out
@@ -105,6 +105,21 @@ def run(args) -> int:
     if args.out is not None:
         print(f"  wrote {args.out}")
     return 0
+
+
+def _with_si(summary: dict, disk) -> dict:
+    """The summary with ``<name>_si`` fields (times in s, the final precession rate in
+    rad/s, dissipated energies in J) and a ``"units"`` map of the fields with a unit."""
+    from rollingdisk.model.units import si_view
+
+    kinds = {"t_end": "time", "t0": "time", "alpha_end": "angle", "Omega_end": "angular_speed",
+             "energy_balance": "dimensionless"}
+    out = with_si(summary, si_view(disk, {k: summary[k] for k in kinds}, kinds))
+    out["dissipated_si"] = {k: float(disk.energy_to_si(v))
+                            for k, v in summary["dissipated"].items()}
+    out["units"].update(dissipated="m g a", dissipated_si="J", t_end_s="s", t0_s="s",
+                        predicted_t_end_s="s", predicted_t0_s="s", wall_time_s="s")
+    return out
 
 
 def _toy(args, parameters: dict):
