@@ -34,6 +34,8 @@ def run(args) -> int:
     agg()
     from rollingdisk.atlas import build
 
-    result = build.build_atlas(disk, args.out, quick=args.quick, progress=not args.quiet)
+    plain = disk.radius is None and disk.mass is None  # dimensionless: its h
+    result = build.build_atlas(disk.h if plain else disk, args.out, quick=args.quick,
+                               progress=not args.quiet)
     print(result.index)
     return 0

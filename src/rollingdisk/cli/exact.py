@@ -79,8 +79,11 @@ def run(args) -> int:
               for k, v in record.items()}
     si = has_scale(disk)
     if si:
-        record = with_si(record, ex.to_si(), {} if stab is None else stab.to_si(disk),
-                         disk_fields(disk))
+        linear = {} if stab is None else stab.to_si(disk)  # only varpi, varpi2 from it
+        linear = {k: v for k, v in linear.items() if k in ("varpi_si", "varpi2_si")}
+        linear["units"] = {"varpi": "sqrt(g/a)", "varpi_si": "rad/s", "varpi2": "g/a",
+                           "varpi2_si": "1/s^2"}
+        record = with_si(record, ex.to_si(), linear, disk_fields(disk))
         if record["varpi"] is None:  # unstable: no frequency
             record["varpi_si"] = None
     if args.out is not None:

@@ -49,10 +49,10 @@ def configure(sub):
 
 
 def run(args) -> int:
-    import rollingdisk as rd
+    from rollingdisk.theory import oscillations
 
     disk = disk_from_args(args)
-    thr = rd.thresholds(disk)
+    thr = oscillations.thresholds(disk)
     d = thr.as_dict()
     si = has_scale(disk)
     if args.json:
