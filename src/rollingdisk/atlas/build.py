@@ -1,10 +1,12 @@
 """The atlas of one disk: thresholds, maps, two simulated steady motions, one HTML page.
 
-:func:`build_atlas` is the orchestration behind ``rollingdisk atlas``: for a disk of
-half-thickness ``h`` it writes into a folder
+:func:`build_atlas` is the orchestration behind ``rollingdisk atlas``: for a disk (a
+:class:`~rollingdisk.model.disk.Disk`, perhaps with a physical size, or its half-thickness
+``h``) it writes into a folder
 
 * ``thresholds.json`` and a table of the stability thresholds (eqs. 42, 43, 53, 57 as
-  corrected in :mod:`rollingdisk.theory.oscillations`),
+  corrected in :mod:`rollingdisk.theory.oscillations`; with SI speeds when the disk has a
+  size),
 * the existence map on rough ground (``(theta0, r_C)``, Figure 4 style; on smooth ground
   every steady circle exists, which the page says in a sentence), stability maps in
   ``(theta0, omega30)`` on both grounds, and the regions stable
@@ -12,9 +14,10 @@ half-thickness ``h`` it writes into a folder
 * one stable and one unstable steady circle on rough ground, simulated from a small tilt
   perturbation, with their plots (paths of C and P, ``theta(t)``, energy error, contact
   force) and a 3D animation each,
-* Euler's disk: the commercial toy (:mod:`rollingdisk.friction.euler_disk`, its own ``h = 0.169``)
-  run to its end with creep friction and rolling resistance, with the fitted and the
-  predicted exponents (run in a second process alongside the other steps),
+* Euler's disk: this disk when it has a size and a mass, else the commercial toy
+  (:mod:`rollingdisk.friction.euler_disk`, its own ``h = 0.169``), run to its end with
+  creep friction and rolling resistance, with the fitted and the predicted exponents
+  (run in a second process alongside the other steps),
 * ``index.html`` showing it all, with relative image paths and no external resources: a
   table of contents, a viewport for phones (images shrink to the width, wide tables
   scroll), units on every number and axis (angles in degrees; the paper's units, or SI
@@ -67,6 +70,8 @@ class AtlasResult:
     motions : dict
         ``{"stable": {...}, "unstable": {...}}``: the chosen steady motions, their
         closed-form stability and what the simulation showed.
+    disk : Disk
+        The disk of the atlas (with its physical scale, if it has one).
     """
 
     out_dir: Path
@@ -75,6 +80,7 @@ class AtlasResult:
     h: float
     timings: dict = field(default_factory=dict)
     motions: dict = field(default_factory=dict)
+    disk: Disk | None = None
 
 
 class _Progress:
@@ -147,9 +153,9 @@ def _save(fig, path: Path, dpi: int, files: list):
     return path
 
 
-def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
+def build_atlas(disk: Disk | float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
                 progress: bool = True, stream=None) -> AtlasResult:
-    """Write the atlas of the disk of half-thickness ``h`` into ``out_dir``.
+    """Write the atlas of ``disk`` into ``out_dir``.
 
     The folder is built under a temporary name beside ``out_dir`` and swapped in at the
     end (:func:`rollingdisk.util.files.atomic_dir`): it appears whole or not at all, its
@@ -159,9 +165,13 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
 
     Parameters
     ----------
-    h : float
-        Half-thickness in units of the radius, ``0 <= h <= 1e8`` (default
-        :data:`rollingdisk.model.disk.DEFAULT_H` = 0.17, about a commercial Euler's disk).
+    disk : Disk or float
+        The disk, or its half-thickness ``h`` in units of the radius, ``0 <= h <= 1e8``
+        (default :data:`rollingdisk.model.disk.DEFAULT_H` = 0.17, about a commercial
+        Euler's disk).  A disk with a physical size (e.g.
+        ``rollingdisk.disk_from_options(disk="euro-1")``) adds SI values to
+        ``thresholds.json`` and the motions' records, and with a mass too it is the disk
+        run as Euler's disk (else the commercial toy).
     out_dir : path-like
         Folder to write; its parent folder must exist.
     quick : bool
@@ -184,13 +194,14 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
     """
     from rollingdisk.theory.regions import example_motions
 
-    h = check_h(h)
+    h = check_h(disk)  # a Disk stands for its h
+    disk = disk if isinstance(disk, Disk) else Disk(h)
     target = check_replaceable(out_dir, ATLAS_FILES, name="out_dir")
     chosen = example_motions(h)  # before any work: fails for a disk with no unstable circle
     pr = _Progress(9, stream=stream, enabled=bool(progress))
     try:
         with atomic_dir(target) as out:
-            files, motions = _write_atlas(h, out, chosen, quick=bool(quick), pr=pr)
+            files, motions = _write_atlas(disk, out, chosen, quick=bool(quick), pr=pr)
     except BaseException:
         pr.abort()  # the message that follows gets a line of its own
         raise
@@ -198,10 +209,10 @@ def build_atlas(h: float = DEFAULT_H, out_dir="atlas", *, quick: bool = False,
     if progress:
         print(f"atlas written to {index} in {pr.total():.1f} s", file=pr.stream, flush=True)
     return AtlasResult(target, index, tuple(target / p.name for p in files), h,
-                       dict(pr.timings), motions)
+                       dict(pr.timings), motions, disk)
 
 
-def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[list, dict]:
+def _write_atlas(disk, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[list, dict]:
     """The steps of :func:`build_atlas`, writing into the (temporary) folder ``out``.
 
     Returns the paths written (index excluded) and the records of the motions."""
@@ -210,9 +221,9 @@ def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[l
     n_map = (60, 50) if quick else (220, 180)
     # Euler's disk runs for seconds on its own: started first, in a second process, and
     # collected after the exact motion (step 8), so the atlas does not wait for it
-    euler = _start_child(_euler_disk_in_child, (out, quick, dpi))
+    euler = _start_child(_euler_disk_in_child, (out, quick, dpi, disk))
     try:
-        return _write_atlas_steps(h, out, chosen, quick=quick, pr=pr, files=files, dpi=dpi,
+        return _write_atlas_steps(disk, out, chosen, quick=quick, pr=pr, files=files, dpi=dpi,
                                   n_map=n_map, euler=euler)
     finally:
         if euler.is_alive():  # interrupted or failed: stop the helper (the folder is dropped)
@@ -220,8 +231,9 @@ def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[l
             euler.join()
 
 
-def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
+def _write_atlas_steps(disk, out, chosen, *, quick, pr, files, dpi, n_map, euler):
     """The steps of :func:`_write_atlas`, with the Euler's-disk helper process running."""
+    h = disk.h
     from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
 
     from rollingdisk.plotting import plots as plotting
@@ -231,9 +243,10 @@ def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
 
     # 1. thresholds ------------------------------------------------------------------
     pr.step("thresholds")
-    thr = thresholds(h).as_dict()
+    thr = thresholds(disk).as_dict()
     (out / "thresholds.json").write_text(
-        json.dumps({"h": h, **_floats(thr)}, indent=2, allow_nan=False))
+        json.dumps({"h": h, **_floats(thr), **_thresholds_si(disk)}, indent=2,
+                   allow_nan=False))
     files.append(out / "thresholds.json")
     pr.done()
 
@@ -243,7 +256,7 @@ def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
     fig = Figure(figsize=(6.4, 5.0))
     ax = fig.subplots(1, 1)
     # h as given: a Disk with a physical scale labels the axes in SI (plots.axis_label)
-    m_ex = plotting.plot_existence_map(h, "rough", ax, n=n_map,
+    m_ex = plotting.plot_existence_map(disk, "rough", ax, n=n_map,
                                        title=f"rough ground, $h={check_h(h):.4g}$")
     fig.tight_layout()
     _save(fig, out / "existence.png", dpi, files)
@@ -254,14 +267,14 @@ def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
     fig = Figure(figsize=(10.0, 5.0))
     axs = fig.subplots(1, 2)
     for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
-        plotting.plot_stability_map(h, ground, ax, n=n_map,
+        plotting.plot_stability_map(disk, ground, ax, n=n_map,
                                     omega30_max=2.0 if ground == "rough" else 2.5)
     fig.tight_layout()
     _save(fig, out / "stability.png", dpi, files)
     fig = Figure(figsize=(10.0, 3.8))
     axs = fig.subplots(1, 2)
     for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
-        plotting.plot_varpi2_curves(h, ground, ax, n=120 if quick else 400)
+        plotting.plot_varpi2_curves(disk, ground, ax, n=120 if quick else 400)
     fig.tight_layout()
     _save(fig, out / "varpi2.png", dpi, files)
     pr.done()
@@ -291,7 +304,7 @@ def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
             theta0, Omega0 = chosen_motion.theta0, chosen_motion.Omega0
             t_end = 12.0 if quick else 30.0
             kick = 0.05 if kind == "stable" else 1e-4
-            motion, stab, traj = steady_trajectory(h, "rough", theta0, Omega0=Omega0,
+            motion, stab, traj = steady_trajectory(disk, "rough", theta0, Omega0=Omega0,
                                                    kick=kick, t_end=t_end,
                                                    n_out=300 if quick else 1500)
             fig = Figure(figsize=(9.0, 6.5))
@@ -402,22 +415,48 @@ def _animate_in_child(traj, path, kw):
     animate(traj, path, **kw)
 
 
-def _euler_disk_in_child(out: Path, quick: bool, dpi: int):
+def _euler_disk_in_child(out: Path, quick: bool, dpi: int, disk: Disk | None = None):
     """The Euler's-disk helper's body: the toy run to its end (``quick``: started at
     ``alpha0 = 0.05``, a short run), ``euler_disk.png`` and ``euler_disk.json`` in ``out``
-    (the atlas's temporary folder; the JSON last, as the sign that both are whole)."""
+    (the atlas's temporary folder; the JSON last, as the sign that both are whole).  The
+    toy is ``disk`` when it has a radius and a mass, else the commercial Euler's disk."""
     from matplotlib.figure import Figure
 
     from rollingdisk.friction.euler_disk import EulerDisk, run_euler_disk
     from rollingdisk.plotting.plots import plot_euler_disk
 
     _quiet_signals()
-    result = run_euler_disk(EulerDisk(alpha0=0.05 if quick else 0.3), max_wall_time=60.0)
+    alpha0 = 0.05 if quick else 0.3
+    if disk is not None and disk.radius is not None and disk.mass is not None:
+        toy = EulerDisk.from_disk(disk, alpha0=alpha0)
+    else:
+        toy = EulerDisk(alpha0=alpha0)
+    result = run_euler_disk(toy, max_wall_time=60.0)
     fig = Figure(figsize=(10.0, 4.2))
     plot_euler_disk(result, fig)  # title: plots.euler_disk_title, symbols with units
     fig.savefig(out / "euler_disk.png", dpi=dpi)
     (out / "euler_disk.json").write_text(json.dumps(result.summary(), indent=2,
                                                     allow_nan=False))
+
+
+def _thresholds_si(disk) -> dict:
+    """The thresholds' SI fields (``<name>_si``: speeds in m/s, angular speeds in rad/s),
+    the disk's size and a ``"units"`` map, for ``thresholds.json``; ``{}`` without a size."""
+    from rollingdisk.theory.oscillations import thresholds
+
+    if disk.radius is None:
+        return {}
+    view = thresholds(disk).to_si()
+    out = {k: float(v) for k, v in view.items() if k != "units" and not isinstance(v, bool)}
+    units = dict(view["units"])
+    out.update(radius_si=disk.radius, thickness_si=2.0 * disk.h * disk.radius,
+               gravity_si=disk.gravity)
+    units.update(radius_si="m", thickness_si="m", gravity_si="m/s^2")
+    if disk.mass is not None:
+        out["mass_si"] = disk.mass
+        units["mass_si"] = "kg"
+    out["units"] = units
+    return out
 
 
 def _floats(d):
@@ -433,7 +472,14 @@ def _motion_record(motion, stab, traj, kick) -> dict:
     theta = trajectory_series(traj, "theta")
     E = trajectory_series(traj, "E")
     measured = compare_with_theory(traj, stab).measured  # the CLI's rule for the linear range
-    return {
+    si = {}
+    if motion.disk.radius is not None:  # SI beside (rad/s, m, s)
+        view = {**motion.to_si(), **stab.to_si(motion.disk)}
+        si = {k: (None if v is None else float(v)) for k, v in view.items()
+              if k.endswith("_si") and k[:-3] in ("Omega0", "omega20", "omega30", "r_C",
+                                                   "r_P", "varpi", "period", "growth_rate")}
+        si["t_end_si"] = float(motion.disk.time_to_si(float(np.asarray(traj.t)[-1])))
+    record = {
         "theta0": float(motion.theta0), "Omega0": float(motion.Omega0),
         "omega20": float(motion.omega20), "omega30": float(motion.omega30),
         "r_C": float(motion.r_C), "r_P": float(motion.r_P),
@@ -444,6 +490,7 @@ def _motion_record(motion, stab, traj, kick) -> dict:
         "max_theta_dev": float(np.max(np.abs(theta - motion.theta0))),
         "energy_error": float(np.max(np.abs(E - E[0]))),  # absolute, units of m g a
     }
+    return {**record, **si}
 
 
 #: The page's style: readable at phone width (the viewport meta tag, images no wider than

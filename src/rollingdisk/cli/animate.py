@@ -3,6 +3,7 @@
 
     $ rollingdisk animate --theta0 30deg --Omega0 2 --out motion.gif
     $ rollingdisk animate --h 0.3 --theta0 0.5 --rC 1 --kick 0.05 --t-end 40 --out m.mp4
+    $ rollingdisk animate --disk cd --theta0 30deg --Omega0 2 --out cd.gif
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ from rollingdisk.cli._args import (
     motion_from_args,
     t_end_arg,
 )
-from rollingdisk.cli._format import agg
+from rollingdisk.cli._format import agg, disk_line, has_scale
 from rollingdisk.cli.figures import dpi_arg
 from rollingdisk.model.disk import DEFAULT_H
 
@@ -56,8 +57,18 @@ def run(args) -> int:
     traj = rd.simulate_steady(motion, args.t_end, perturb=args.perturb, kick=args.kick,
                               t_eval=np.linspace(0.0, args.t_end, 1200))
     verdict = "stable" if stab.stable else "unstable"
-    print(f"{args.ground} ground, h = {args.h:g}, theta0 = {motion.theta0:.4g}, "
-          f"Omega0 = {motion.Omega0:.4g}: {verdict}, varpi^2 = {stab.varpi2:.4g}; "
-          f"simulation {traj.status}", file=sys.stderr)
+    disk = motion.disk
+    if has_scale(disk):  # SI beside
+        print(disk_line(disk), file=sys.stderr)
+        rate = disk.angular_speed_to_si(motion.Omega0)
+        varpi2 = stab.varpi2 / disk.time_unit ** 2
+        extra = (f" ({rate:.4g} rad/s)", f" ({varpi2:.4g} 1/s^2)",
+                 f" over {disk.time_to_si(args.t_end):.4g} s")
+    else:
+        extra = ("", "", "")
+    print(f"{args.ground} ground, h = {disk.h:g}, theta0 = {motion.theta0:.4g}, "
+          f"Omega0 = {motion.Omega0:.4g}{extra[0]}: {verdict}, varpi^2 = "
+          f"{stab.varpi2:.4g}{extra[1]}; simulation{extra[2]} {traj.status}",
+          file=sys.stderr)
     print(animate(traj, args.out, n_frames=args.frames, fps=args.fps, dpi=args.dpi))
     return 0

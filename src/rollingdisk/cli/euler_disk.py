@@ -3,6 +3,8 @@ the exponents near the end fitted and predicted (docs/friction.md).
 
     $ rollingdisk euler-disk
     $ rollingdisk euler-disk --air --out euler --json
+    $ rollingdisk euler-disk --disk euro-1          # a 1-euro coin spun like the toy
+    $ rollingdisk euler-disk --radius 5cm --thickness 1cm --mass 600g --rolling-resistance 20um
 """
 
 from __future__ import annotations
@@ -10,7 +12,16 @@ from __future__ import annotations
 import json
 import math
 
-from rollingdisk.cli._args import positive_int, real
+from rollingdisk.cli._args import (
+    DISK_OPTIONS,
+    add_disk_options,
+    disk_from_args,
+    length_coefficient,
+    positive_int,
+    real,
+    resolve_length,
+)
+from rollingdisk.cli._format import disk_line, with_si
 
 
 def configure(sub):
@@ -20,11 +31,21 @@ def configure(sub):
     toy = EulerDisk()
     p = sub.add_parser(
         "euler-disk",
-        description="The commercial Euler's disk (radius 37.5 mm, thickness 12.7 mm, "
-        "0.45 kg) started on its spin-in-place steady motion and run with creep friction "
-        "and rolling resistance (and, with --air, Moffatt's air film) until it falls flat, "
-        "lifts off or comes to rest; exponents near the end fitted and predicted "
-        "(docs/friction.md).")
+        description="Euler's disk, by default the commercial toy (radius 37.5 mm, thickness "
+        "12.7 mm, 0.45 kg; or any disk with a physical size and mass: --disk NAME, or "
+        "--radius/--diameter with --thickness and --mass), started on its spin-in-place "
+        "steady motion and run with creep friction and rolling resistance (and, with --air, "
+        "Moffatt's air film) until it falls flat, lifts off or comes to rest; exponents "
+        "near the end fitted and predicted (docs/friction.md).")
+    g = add_disk_options(p)
+    g.description = ("Default: the commercial Euler's Disk (--mass and --gravity alone "
+                     "change only those). Any other disk needs a physical size and a mass: "
+                     "--disk NAME, or --radius/--diameter with --thickness (or --h) and "
+                     "--mass.")
+    for action in g._group_actions:
+        if action.dest == "h":
+            action.help = ("half-thickness / radius (dimensionless), with --radius or "
+                           "--diameter")
     p.add_argument("--out", default=None, metavar="DIR",
                    help="folder for " + ", ".join(EULER_DISK_FILES) + " (new, empty, or "
                    "written by this command before: it is replaced as a whole)")
@@ -33,12 +54,19 @@ def configure(sub):
                    help=f"Moffatt's air film, air viscosity {AIR_VISCOSITY:g} Pa s")
     p.add_argument("--quiet", action="store_true", help="no progress bar on stderr")
     p.add_argument("--mu", type=real("mu", low=0.0), default=toy.mu,
-                   help=f"friction coefficient at saturation (default {toy.mu:g})")
+                   help=f"friction coefficient at saturation, dimensionless (default "
+                   f"{toy.mu:g})")
     p.add_argument("--creep", type=real("creep", low=0.0, low_open=True),
-                   default=toy.creep, help=f"creep coefficient k (default {toy.creep:g})")
+                   default=toy.creep, help="creep coefficient k > 0: tangential force "
+                   "-k F_z u at small slip speed u, u in units sqrt(a g) (so k in units "
+                   f"1/sqrt(a g)) (default {toy.creep:g})")
     p.add_argument("--rolling-resistance", dest="rolling_resistance",
-                   type=real("rolling_resistance", low=0.0), default=toy.rolling_resistance,
-                   help=f"rolling-resistance length / a (default {toy.rolling_resistance:g})")
+                   type=length_coefficient("rolling_resistance"),
+                   default=toy.rolling_resistance, metavar="C",
+                   help="rolling-resistance length c >= 0 (|M_h| = c F_z), in units of the "
+                   f"radius a (default {toy.rolling_resistance:g}, "
+                   f"{toy.rolling_resistance * toy.radius * 1e6:.3g} um on the toy) or a "
+                   "length with a unit (20um)")
     p.add_argument("--alpha0", type=real("alpha0", low=0.0, high=math.pi / 2, low_open=True,
                                          high_open=True),
                    default=toy.alpha0, help=f"initial tilt in rad (default {toy.alpha0:g})")
@@ -51,13 +79,13 @@ def configure(sub):
 
 
 def run(args) -> int:
-    from rollingdisk.friction.euler_disk import AIR_VISCOSITY, EulerDisk, run_euler_disk
+    from rollingdisk.friction.euler_disk import AIR_VISCOSITY, run_euler_disk
     from rollingdisk.plotting.reports import EULER_DISK_FILES, write_euler_disk
     from rollingdisk.util.files import check_replaceable
     from rollingdisk.util.progress import ProgressBar
 
-    toy = EulerDisk(mu=args.mu, creep=args.creep, rolling_resistance=args.rolling_resistance,
-                    alpha0=args.alpha0, air_viscosity=AIR_VISCOSITY if args.air else None)
+    toy = _toy(args, dict(mu=args.mu, creep=args.creep, alpha0=args.alpha0,
+                          air_viscosity=AIR_VISCOSITY if args.air else None))
     if args.out is not None:
         check_replaceable(args.out, EULER_DISK_FILES, name="--out")  # before the work
     bar = ProgressBar(quiet=args.quiet)
@@ -66,7 +94,7 @@ def run(args) -> int:
                                 max_wall_time=args.max_wall_time, progress=bar)
     finally:
         bar.close()
-    summary = result.summary()
+    summary = _with_si(result.summary(), result.toy.disk)
     if args.out is not None:
         write_euler_disk(result, args.out)
         summary["out"] = args.out
@@ -79,9 +107,53 @@ def run(args) -> int:
     return 0
 
 
+def _with_si(summary: dict, disk) -> dict:
+    """The summary with ``<name>_si`` fields (times in s, the final precession rate in
+    rad/s, dissipated energies in J) and a ``"units"`` map of the fields with a unit."""
+    from rollingdisk.model.units import si_view
+
+    kinds = {"t_end": "time", "t0": "time", "alpha_end": "angle", "Omega_end": "angular_speed",
+             "energy_balance": "dimensionless"}
+    out = with_si(summary, si_view(disk, {k: summary[k] for k in kinds}, kinds))
+    out["dissipated_si"] = {k: float(disk.energy_to_si(v))
+                            for k, v in summary["dissipated"].items()}
+    out["units"].update(dissipated="m g a", dissipated_si="J", t_end_s="s", t0_s="s",
+                        predicted_t_end_s="s", predicted_t0_s="s", wall_time_s="s")
+    return out
+
+
+def _toy(args, parameters: dict):
+    """The toy the options give: the commercial Euler's Disk unless a disk is named or
+    sized (which must have a mass); ``--mass``/``--gravity`` alone change only those."""
+    from rollingdisk.friction.euler_disk import EulerDisk
+    from rollingdisk.util.errors import ParameterError
+
+    sized = args.h is not None or any(getattr(args, k) is not None for k in DISK_OPTIONS
+                                      if k not in ("mass", "gravity"))
+    if not sized:
+        base = EulerDisk()
+        if args.mass is not None or args.gravity is not None:
+            import rollingdisk as rd
+
+            d = rd.disk_from_options(disk="euler-disk", mass=args.mass, gravity=args.gravity,
+                                     option_prefix="--")
+            base = EulerDisk(mass=d.mass, gravity=d.gravity)
+        c = resolve_length(args.rolling_resistance, base.disk, "--rolling-resistance")
+        return EulerDisk(radius=base.radius, thickness=base.thickness, mass=base.mass,
+                         gravity=base.gravity, rolling_resistance=c, **parameters)
+    disk = disk_from_args(args)
+    if disk.radius is None or disk.mass is None:
+        raise ParameterError("euler-disk needs a disk with a physical size and a mass: "
+                             "--disk NAME, or --radius/--diameter with --thickness (or --h) "
+                             "and --mass (without any, the commercial Euler's Disk)")
+    c = resolve_length(args.rolling_resistance, disk, "--rolling-resistance")
+    return EulerDisk.from_disk(disk, rolling_resistance=c, **parameters)
+
+
 def _print(result) -> None:
     unit = result.toy.time_unit
     print(result.message)
+    print(f"  {disk_line(result.toy.disk)}")
     print(f"  end time       {result.t_end_s:.4g} s  (t = {result.t_end:.6g} sqrt(a/g); "
           f"adiabatic decay along the steady family: {result.predicted_t_end * unit:.4g} s)")
     print(f"  fitted t0      {result.t0_s:.4g} s  (alpha -> 0 of the power law; "

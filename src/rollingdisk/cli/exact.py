@@ -4,6 +4,7 @@ points, nutation period, precession per period, and optionally its figure.
     $ rollingdisk exact --h 0.1 --theta0 0.4 --Omega0 3 --kick 0.3
     $ rollingdisk exact --ground smooth --h 0.1 --state theta=0.3,omega3=2 --json
     $ rollingdisk exact --h 0.1 --theta0 0.4 --Omega0 3 --kick 0.3 --out exact.png
+    $ rollingdisk exact --disk us-quarter --theta0 0.4 --Omega0 3 --kick 0.3   # SI beside
 """
 
 from __future__ import annotations
@@ -14,11 +15,19 @@ from rollingdisk.cli._args import (
     add_motion_args,
     add_perturbation_args,
     add_state_arg,
+    disk_from_args,
     initial_state,
     integer,
     start_from_args,
 )
-from rollingdisk.cli._format import finite_or_none
+from rollingdisk.cli._format import (
+    disk_fields,
+    disk_line,
+    finite_or_none,
+    has_scale,
+    si_text,
+    with_si,
+)
 
 KEYS = ("theta_min", "theta_max", "amplitude", "period", "frequency", "varpi", "delta_psi",
         "delta_phi", "t_end", "theta_end", "E")
@@ -40,7 +49,9 @@ def configure(sub):
     p.add_argument("--out", type=str, default=None, metavar="FILE.png",
                    help="a figure: theta(t) over a period, the contact point's rosette, and "
                    "the backbone curve (frequency against amplitude) about the steady motion")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.add_argument("--json", action="store_true",
+                   help="print one JSON object (for a disk with a physical size: SI values "
+                   "as <name>_si fields and a \"units\" map)")
     return p
 
 
@@ -48,7 +59,7 @@ def run(args) -> int:
     import rollingdisk as rd
     from rollingdisk.theory import exact
 
-    disk = rd.Disk(h=args.h)
+    disk = disk_from_args(args)
     motion = start_from_args(args, "exact")
     if args.out is not None:  # refused before the work
         from rollingdisk.plotting.plots import image_format
@@ -66,6 +77,15 @@ def run(args) -> int:
     record["varpi2"] = None if stab is None else stab.varpi2
     record = {k: v if k == "drift" or not isinstance(v, float) else finite_or_none(v)
               for k, v in record.items()}
+    si = has_scale(disk)
+    if si:
+        linear = {} if stab is None else stab.to_si(disk)  # only varpi, varpi2 from it
+        linear = {k: v for k, v in linear.items() if k in ("varpi_si", "varpi2_si")}
+        linear["units"] = {"varpi": "sqrt(g/a)", "varpi_si": "rad/s", "varpi2": "g/a",
+                           "varpi2_si": "1/s^2"}
+        record = with_si(record, ex.to_si(), linear, disk_fields(disk))
+        if record["varpi"] is None:  # unstable: no frequency
+            record["varpi_si"] = None
     if args.out is not None:
         from rollingdisk.plotting.reports import save_exact_figure
 
@@ -75,13 +95,23 @@ def run(args) -> int:
     if args.json:
         print(json.dumps(record, indent=2, allow_nan=False))
         return 0
+    if si:
+        print(disk_line(disk))
     print(f"status       {ex.status}")
     for key in KEYS:
         if record.get(key) is not None:
-            print(f"{key:<12} {record[key]:>18.12g}")
+            extra = record.get(f"{key}_si") if si else None
+            extra = "" if extra is None else \
+                f"   {si_text(extra, record['units'][f'{key}_si']):>20}"
+            print(f"{key:<12} {record[key]:>18.12g}{extra}")
     if record["drift"] is not None:
         print(f"{'drift':<12} {record['drift'][0]:>18.12g} {record['drift'][1]:.12g}"
               "   contact point's displacement over the first period (X, Y)")
+        if si and record.get("drift_si") is not None:
+            x, y = record["drift_si"]
+            print(f"{'drift_si':<12} {x:>18.6g} {y:.6g}   (m)")
+    if si:
+        print("(dimensionless: m = a = g = 1, time unit sqrt(a/g); SI in the third column)")
     if ex.message:
         print(f"{'message':<12} {ex.message}")
     if args.out is not None:

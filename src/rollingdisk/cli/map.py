@@ -4,12 +4,15 @@ surface varpi^2 = 0, or simulated stability from a sweep.
     $ rollingdisk map --ground rough --h 0.17 --kind stability --out stability.png
     $ rollingdisk map --ground smooth --kind surface --out surface.pdf
     $ rollingdisk map --ground rough --kind nonlinear --out nonlinear.png
+    $ rollingdisk map --ground rough --disk euro-1 --kind stability --out coin.png
 """
 
 from __future__ import annotations
 
-from rollingdisk.cli._args import H
-from rollingdisk.cli._format import agg
+import sys
+
+from rollingdisk.cli._args import add_disk_options, disk_from_args
+from rollingdisk.cli._format import agg, disk_line, has_scale
 from rollingdisk.cli.figures import dpi_arg
 from rollingdisk.model.disk import DEFAULT_H
 
@@ -19,12 +22,13 @@ KINDS = ("existence", "stability", "surface", "all-omega30", "nonlinear", "basin
 def configure(sub):
     from rollingdisk.plotting.plots import IMAGE_FORMATS
 
-    p = sub.add_parser("map")
+    p = sub.add_parser(
+        "map", description="A map for any disk, in the paper's units (angular speeds in "
+        "sqrt(g/a), radii in units of a): only the disk's h = thickness / (2 radius) "
+        "matters; --kind surface spans h and takes no disk.")
     p.add_argument("--ground", required=True, choices=("rough", "smooth"),
                    help="rough (no slip) or smooth (no friction)")
-    p.add_argument("--h", type=H, default=DEFAULT_H,
-                   help=f"half-thickness (default {DEFAULT_H:g}; not used by --kind surface, "
-                   "which spans h)")
+    add_disk_options(p, default_h=DEFAULT_H)
     p.add_argument("--kind", required=True, choices=KINDS,
                    help="existence: (theta0, r_C) plane; stability: (theta0, omega30) "
                    "plane; surface: varpi^2 = 0 in (theta0, h, omega30); all-omega30: "
@@ -44,6 +48,8 @@ def run(args) -> int:
 
     image_format(args.out)  # before any work
     check_writable(args.out, name="out")
+    disk = disk_from_args(args)
+    args.h = disk.h
     agg()
     from rollingdisk.plotting import plots
 
@@ -60,6 +66,10 @@ def run(args) -> int:
     fig = m["ax"].figure if isinstance(m, dict) else m.ax.figure
     fig.tight_layout()
     plots.save_figure(fig, args.out, dpi=args.dpi)
+    if has_scale(disk):
+        print(f"{disk_line(disk)}; the map is in the paper's units (omega in sqrt(g/a) = "
+              f"{1.0 / disk.time_unit:.6g} rad/s, lengths in a = {disk.radius:.6g} m)",
+              file=sys.stderr)
     print(args.out)
     return 0
 

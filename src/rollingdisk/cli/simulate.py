@@ -6,6 +6,7 @@ motion or any state, on rough, smooth or Coulomb ground.
           --out run.csv --json
     $ rollingdisk simulate --ground coulomb --mu 0.3 --h 0.1 --theta0 0.3 --Omega0 2 \\
           --t-end 20
+    $ rollingdisk simulate --disk euro-1 --theta0 30deg --Omega0 2 --t-end 100 --out c.csv
 """
 
 from __future__ import annotations
@@ -20,15 +21,32 @@ from rollingdisk.cli._args import (
     add_perturbation_args,
     add_state_arg,
     add_tolerance_args,
+    disk_from_args,
     initial_state,
+    length_coefficient,
     positive_int,
     real,
+    resolve_length,
     start_from_args,
     t_end_arg,
 )
-from rollingdisk.cli._format import finite_or_none, print_record
+from rollingdisk.cli._format import (
+    disk_fields,
+    disk_line,
+    finite_or_none,
+    has_scale,
+    print_record,
+    with_si,
+)
 
 FRICTION = ("mu", "mu_k", "rolling_resistance", "pivot", "air")
+
+#: The kind of quantity of each field of the summary (keys of rollingdisk.model.units.KINDS).
+KINDS = {"h": "dimensionless", "t_end": "time", "energy_drift": "dimensionless",
+         "theta_min": "angle", "theta_max": "angle", "theta_frequency": "angular_speed",
+         "varpi": "angular_speed", "varpi2": "rate_sq", "growth_rate": "rate",
+         "energy_balance": "dimensionless", "mu_s": "dimensionless",
+         "mu_k": "dimensionless", "rolling_resistance": "length", "pivot": "length"}
 
 
 def configure(sub):
@@ -49,16 +67,21 @@ def configure(sub):
                   "then the velocity of C is the rolling one (eq. 37)")
     c = p.add_argument_group("coulomb ground (docs/friction.md)")
     c.add_argument("--mu", type=real("mu_s", low=0.0), default=None,
-                   help="static friction coefficient mu_s >= 0 (needed for --ground coulomb)")
+                   help="static friction coefficient mu_s >= 0, dimensionless (needed for "
+                   "--ground coulomb)")
     c.add_argument("--mu-k", dest="mu_k", type=real("mu_k", low=0.0), default=None,
-                   help="kinetic coefficient, 0 <= mu_k <= mu_s (default mu_s)")
+                   help="kinetic coefficient, dimensionless, 0 <= mu_k <= mu_s (default mu_s)")
     c.add_argument("--rolling-resistance", dest="rolling_resistance",
-                   type=real("rolling_resistance", low=0.0), default=None,
-                   help="rolling-resistance length c: |M_h| = c F_z")
-    c.add_argument("--pivot", type=real("pivot", low=0.0), default=None,
-                   help="pivoting (drilling) friction length c: |M_z| = c F_z")
-    c.add_argument("--air", type=real("air", low=0.0), default=None,
-                   help="air-film drag coefficient (Moffatt's model)")
+                   type=length_coefficient("rolling_resistance"), default=None, metavar="C",
+                   help="rolling-resistance length c >= 0: |M_h| = c F_z; in units of the "
+                   "radius a, or a length with a unit (20um) for a disk with a physical size")
+    c.add_argument("--pivot", type=length_coefficient("pivot"), default=None, metavar="C",
+                   help="pivoting (drilling) friction length c >= 0: |M_z| = c F_z; in units "
+                   "of a, or a length with a unit for a disk with a physical size")
+    c.add_argument("--air", type=real("air", low=0.0), default=None, metavar="C",
+                   help="air-film drag coefficient c >= 0 (Moffatt's model: a moment per "
+                   "angular speed, units m a^(3/2) g^(1/2); c = 2 pi mu_air a^(3/2) / "
+                   "(m g^(1/2)), about 2.2e-4 for Euler's disk in air)")
     add_perturbation_args(p)
     t_end_arg(p, high=SIMULATE_T_END_MAX)
     add_tolerance_args(p)
@@ -76,17 +99,21 @@ def configure(sub):
     p.add_argument("--out", type=str, default=None, metavar="FILE.csv",
                    help="write the trajectory as CSV (t, X_C, Y_C, psi, theta, phi, omega1, "
                    "omega2, omega3, X_P, Y_P, F_x, F_y, F_z, E; smooth and coulomb ground "
-                   "add V_X, V_Y; coulomb ground adds mode: 0 rolling, 1 sliding)")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
+                   "add V_X, V_Y; coulomb ground adds mode: 0 rolling, 1 sliding); the "
+                   "first line names the columns; in the paper's units, or for a disk with "
+                   "a physical size in SI units (forces and energies only with --mass) with "
+                   "a second line '# t [s],X_C [m],...' naming each column's unit")
+    p.add_argument("--json", action="store_true",
+                   help="print one JSON object (for a disk with a physical size: SI values "
+                   "as <name>_si fields and a \"units\" map)")
     return p
 
 
 def run(args) -> int:
-    import rollingdisk as rd
     from rollingdisk.util.files import check_writable
 
-    disk = rd.Disk(h=args.h)
-    coulomb = _coulomb_ground(args)
+    disk = disk_from_args(args)
+    coulomb = _coulomb_ground(args, disk)
     motion = start_from_args(args, "simulate")
     if args.out is not None:
         check_writable(args.out, name="--out")
@@ -98,20 +125,48 @@ def run(args) -> int:
         record, transitions = _run_ideal(args, disk, motion), []
         keys = ("t_end", "n_steps", "energy_drift", "theta_min", "theta_max",
                 "theta_frequency", "varpi", "growth_rate", "wall_time_s")
+    if has_scale(disk):
+        record = _with_si(record, disk)
+        transitions = record.get("transitions", transitions)
     if args.out is not None:
         record["out"] = args.out
     if args.json:
         print(json.dumps(record, indent=2, allow_nan=False))
         return 0
     print(record["message"])
+    if has_scale(disk):
+        print(f"  {disk_line(disk)}")
     print_record(record, keys)
     for x in transitions[:20]:
-        print(f"  t = {x['t']:.10g}: {x['from']} -> {x['to']}")
+        when = f" ({x['t_si']:.6g} s)" if x.get("t_si") is not None else ""
+        print(f"  t = {x['t']:.10g}{when}: {x['from']} -> {x['to']}")
     if len(transitions) > 20:
         print(f"  ... {len(transitions) - 20} more transitions")
     if args.out is not None:
         print(f"  wrote {args.out}")
     return 0
+
+
+def _with_si(record: dict, disk) -> dict:
+    """The summary with SI values beside its dimensional fields, the dissipated energies
+    (with a mass) and the transition times, and a ``"units"`` map."""
+    from rollingdisk.model.units import can_convert, si_view
+
+    view = si_view(disk, {k: v for k, v in record.items() if k in KINDS}, KINDS)
+    out = with_si(record, view, disk_fields(disk))
+    if out.get("air") is not None:
+        out["units"]["air"] = "m a^(3/2) g^(1/2)"
+    if "dissipated" in record:
+        out["units"]["dissipated"] = "m g a"
+        if can_convert(disk, "energy"):
+            out["dissipated_si"] = {k: float(disk.energy_to_si(v))
+                                    for k, v in record["dissipated"].items()}
+            out["units"]["dissipated_si"] = "J"
+    if "transitions" in record:
+        out["transitions"] = [{**x, "t_si": float(disk.time_to_si(x["t"]))}
+                              for x in record["transitions"]]
+    out["units"]["wall_time_s"] = "s"
+    return out
 
 
 def _bar(args):
@@ -138,7 +193,7 @@ def _run_ideal(args, disk, motion) -> dict:
               else contextlib.nullcontext())
     try:
         with csv_cm as csv:
-            summary = StreamSummary(disk, args.ground, csv)
+            summary = StreamSummary(disk, args.ground, csv, si=has_scale(disk))
             options.update(sink=summary, progress=bar)
             if motion is not None:
                 traj = rd.simulate_steady(motion, args.t_end, perturb=args.perturb,
@@ -164,7 +219,7 @@ def _run_ideal(args, disk, motion) -> dict:
     return {k: finite_or_none(v) for k, v in record.items()}
 
 
-def _coulomb_ground(args):
+def _coulomb_ground(args, disk):
     """The :class:`~rollingdisk.friction.ground.Coulomb` ground the options ask for, or None."""
     extra = [f"--{n.replace('_', '-')}" for n in FRICTION if getattr(args, n) is not None]
     if args.ground != "coulomb":
@@ -179,8 +234,10 @@ def _coulomb_ground(args):
                        "smooth ground; coulomb ground has its own hybrid integrator")
     import rollingdisk as rd
 
-    return rd.Coulomb(args.mu, args.mu_k, rolling_resistance=args.rolling_resistance,
-                      pivot=args.pivot, air=args.air)
+    return rd.Coulomb(args.mu, args.mu_k,
+                      rolling_resistance=resolve_length(args.rolling_resistance, disk,
+                                                        "--rolling-resistance"),
+                      pivot=resolve_length(args.pivot, disk, "--pivot"), air=args.air)
 
 
 def _coulomb_state(args, disk, motion) -> list[float]:
@@ -227,6 +284,8 @@ def _run_coulomb(args, disk, ground, motion) -> tuple[dict, list]:
     }
     record = {k: finite_or_none(v) for k, v in record.items()}
     if args.out is not None:
+        si = has_scale(disk)
         with atomic_file(args.out, "w", newline="") as csv:
-            write_columns(csv, traj.as_columns())
+            write_columns(csv, traj.as_columns(si=si),
+                          units=traj.csv_header(si=True) if si else None)
     return record, transitions

@@ -4,6 +4,7 @@
     $ rollingdisk steady --h 0.17 --theta0 30deg --Omega0 2
     $ rollingdisk steady --ground smooth --h 0.3 --theta0 0.5 --rP 0.4 --json
     $ rollingdisk steady --h 0.1 --motion straight --omega0 2
+    $ rollingdisk steady --disk euro-1 --theta0 30deg --Omega0 2      # SI beside
 """
 
 from __future__ import annotations
@@ -11,7 +12,8 @@ from __future__ import annotations
 import json
 import math
 
-from rollingdisk.cli._args import add_motion_args, motion_from_args
+from rollingdisk.cli._args import add_motion_args, disk_from_args, motion_from_args
+from rollingdisk.cli._format import disk_fields, disk_line, has_scale, si_text, with_si
 
 LABELS = [
     ("ground", "ground"), ("h", "half-thickness / radius"), ("motion", "kind of motion"),
@@ -40,17 +42,29 @@ def configure(sub):
 def run(args) -> int:
     import rollingdisk as rd
 
+    disk = disk_from_args(args)
     motion = motion_from_args(args, "steady")
-    rec = {**motion.as_dict(), "theta0_deg": math.degrees(motion.theta0),
-           **rd.stability(motion).as_dict()}
+    stab = rd.stability(motion)
+    rec = {**motion.as_dict(), "theta0_deg": math.degrees(motion.theta0), **stab.as_dict()}
+    si = has_scale(disk)
+    if si:  # SI beside every dimensional field, and the units of each
+        rec = with_si(rec, motion.to_si(), stab.to_si(disk), disk_fields(disk))
     if args.json:
         print(json.dumps(rec, allow_nan=False))
         return 0
+    if si:
+        print(disk_line(disk))
     for key, text in LABELS:
         v = rec[key]
         if v is None:
             continue
         val = f"{v:.10g}" if isinstance(v, float) else str(v)
-        print(f"{key:<12} {val:>18}   {text}")
-    print("(dimensionless: m = a = g = 1, time unit sqrt(a/g))")
+        if si:
+            extra = rec.get(f"{key}_si")
+            extra = "" if extra is None else si_text(extra, rec["units"][f"{key}_si"])
+            print(f"{key:<12} {val:>18}   {extra:>20}   {text}")
+        else:
+            print(f"{key:<12} {val:>18}   {text}")
+    print("(dimensionless: m = a = g = 1, time unit sqrt(a/g)"
+          + ("; SI in the third column)" if si else ")"))
     return 0

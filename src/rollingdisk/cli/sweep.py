@@ -6,6 +6,8 @@ per-trajectory summaries next to the closed-form varpi^2 (docs/sweeps.md).
     $ rollingdisk sweep --ground smooth --h 0:0.5:6 --omega0 0.3:2:10 --t-end 50 --out s.nc
     $ rollingdisk sweep --ground rough --theta0 0.5 --omega30 1:3:5 --t-end 100 --basin \\
           --kick 0.5 --out basin.zarr
+    $ rollingdisk sweep --ground rough --disk euro-1 --theta0 0.3:1.2:20 --omega30 1:3:20 \\
+          --t-end 100 --out coin.zarr
 """
 
 from __future__ import annotations
@@ -16,13 +18,18 @@ import math
 import time
 
 from rollingdisk.cli._args import (
+    DISK_OPTIONS,
     T_END_MAX,
     CLIError,
+    add_disk_options,
+    disk_from_args,
     parse_angle,
     positive_int,
     real,
     t_end_arg,
 )
+from rollingdisk.cli._format import disk_fields, disk_line, has_scale, with_si
+from rollingdisk.model.disk import DEFAULT_H
 from rollingdisk.util.checks import check_int, check_real
 from rollingdisk.util.errors import INPUT_ERRORS
 
@@ -59,8 +66,11 @@ def configure(sub):
         "varpi^2 (docs/sweeps.md). Ranges as A:B:N.")
     p.add_argument("--ground", choices=("rough", "smooth"), required=True,
                    help="rough (no slip) or smooth (no friction)")
-    p.add_argument("--h", type=sweep_range, default=[0.17],
-                   help="half-thickness H or A:B:N (default 0.17)")
+    g = add_disk_options(p, h=False)
+    g.add_argument("--h", type=sweep_range, default=None, metavar="H|A:B:N",
+                   help=f"half-thickness / radius (dimensionless), one value or a range A:B:N "
+                   f"(default {DEFAULT_H:g}); a physical disk (--disk, --radius ...) has "
+                   "one h")
     p.add_argument("--theta0", type=sweep_range, default=None,
                    help="A:B:N (radians or deg); required for circles, not with --omega0")
     g = p.add_mutually_exclusive_group(required=True)
@@ -104,7 +114,25 @@ def _grid(args):
     if args.basin and args.perturb is not None:
         raise CLIError("rollingdisk sweep: error: --basin bisects the kick; drop --perturb")
     second = {k: getattr(args, k) for k in ("omega30", "Omega0", "omega0")}
-    return SweepGrid(args.ground, h=args.h, theta0=args.theta0 or (), r_C=args.rC, **second)
+    return SweepGrid(args.ground, h=_h_values(args), theta0=args.theta0 or (), r_C=args.rC,
+                     **second)
+
+
+def _physical(args) -> bool:
+    """Whether a disk option other than --h was given (then one disk, one h)."""
+    return any(getattr(args, k) is not None for k in DISK_OPTIONS)
+
+
+def _h_values(args) -> list[float]:
+    """The h of the grid: --h (a value or a range) for a dimensionless sweep, else the one
+    h of the disk the options give."""
+    if not _physical(args):
+        return [DEFAULT_H] if args.h is None else args.h
+    if args.h is not None and len(args.h) > 1:
+        raise CLIError("rollingdisk sweep: error: --h A:B:N sweeps dimensionless disks; a "
+                       "physical disk (--disk, --radius, --diameter, --thickness, --mass, "
+                       "--gravity) has one h: give --h as one value or drop the range")
+    return [disk_from_args(args).h]
 
 
 def run(args) -> int:
@@ -113,6 +141,7 @@ def run(args) -> int:
     from rollingdisk.util.progress import ProgressBar
 
     grid = _grid(args)
+    disk = disk_from_args(args) if _physical(args) else None
     start = time.perf_counter()
     executor = "dask" if args.dask else ("threads" if args.workers != 1 else "serial")
     bar = ProgressBar(label="sweep", delay=0.0, interval=0.5, quiet=args.json)
@@ -139,9 +168,19 @@ def run(args) -> int:
     rate = computed / wall if wall > 0 else None
     rec = {"n": n, "n_computed": computed, "wall_time_s": wall, "trajectories_per_s": rate,
            "agreement": agree, "out": args.out}
+    if has_scale(disk):  # the dataset stays in the paper's units; its scale beside
+        rec.update(h=disk.h, t_end=args.t_end)
+        rec = with_si(rec, {"t_end_si": float(disk.time_to_si(args.t_end)),
+                            "time_unit_si": disk.time_unit,
+                            "units": {"t_end": "sqrt(a/g)", "t_end_si": "s",
+                                      "time_unit_si": "s", "h": "1"}}, disk_fields(disk))
     if args.json:
         print(json.dumps(rec, allow_nan=False))
     else:
+        if has_scale(disk):
+            print(f"{disk_line(disk)}; each run {args.t_end:g} sqrt(a/g) = "
+                  f"{rec['t_end_si']:.6g} s; the dataset is in the paper's units "
+                  f"(time unit sqrt(a/g) = {disk.time_unit:.6g} s)")
         print(f"{n} trajectories in {wall:.1f} s ({rate or 0:.0f}/s); agreement {agree}; "
               f"{args.out}")
     return 0

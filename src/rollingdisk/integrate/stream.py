@@ -20,7 +20,8 @@ from rollingdisk.util.checks import check_int
 __all__ = ["StreamSummary", "write_columns"]
 
 
-def write_columns(fh, columns: dict, *, header: bool = True, fmt: str = "%.17g") -> None:
+def write_columns(fh, columns: dict, *, header: bool = True, fmt: str = "%.17g",
+                  units: str | None = None) -> None:
     """Write named columns as CSV rows (``np.savetxt``; ``%.17g`` round-trips a float).
 
     Parameters
@@ -33,10 +34,17 @@ def write_columns(fh, columns: dict, *, header: bool = True, fmt: str = "%.17g")
         Write the names as the first line.
     fmt : str
         Number format.
+    units : str, optional
+        With ``header``: a second line ``# <units>`` after the names (e.g.
+        :meth:`Trajectory.csv_header`, ``t [s],X_C [m],...``), a comment that
+        ``np.genfromtxt(names=True)``, ``np.loadtxt`` and ``pandas.read_csv(comment="#")``
+        skip, so that the names stay plain.
     """
+    text = ",".join(columns) if header else ""
+    if header and units:
+        text += "\n# " + units
     np.savetxt(fh, np.column_stack([np.asarray(v, dtype=float) for v in columns.values()]),
-               delimiter=",", header=",".join(columns) if header else "", comments="",
-               fmt=fmt)
+               delimiter=",", header=text, comments="", fmt=fmt)
 
 
 class StreamSummary:
@@ -53,6 +61,10 @@ class StreamSummary:
         the header once.
     keep : int
         The first ``keep`` points are kept for :meth:`kept` (default 200000).
+    si : bool
+        Write the CSV in SI units where the disk's scale allows
+        (:meth:`Trajectory.as_columns`), with a second header line naming each column's
+        unit (:func:`write_columns`).
 
     Attributes
     ----------
@@ -71,8 +83,8 @@ class StreamSummary:
     (True, True)
     """
 
-    def __init__(self, disk, ground: str, csv=None, *, keep: int = 200_000):
-        self.disk, self.ground, self.csv = disk, ground, csv
+    def __init__(self, disk, ground: str, csv=None, *, keep: int = 200_000, si: bool = False):
+        self.disk, self.ground, self.csv, self.si = disk, ground, csv, bool(si)
         self.keep = check_int("keep", keep, low=0)
         self._t, self._y = [], []
         self.n_kept = 0
@@ -107,7 +119,8 @@ class StreamSummary:
             self._y.append(np.array(y[:, :k]))
             self.n_kept += k
         if self.csv is not None:
-            write_columns(self.csv, part.as_columns(), header=self._header)
+            write_columns(self.csv, part.as_columns(si=self.si), header=self._header,
+                          units=part.csv_header(si=True) if self.si else None)
             self._header = False
 
     def kept(self, traj: Trajectory) -> Trajectory:
