@@ -103,11 +103,11 @@ def test_example_motions_for_any_disk(h):
 
 
 @pytest.mark.slow
-def test_atlas_default_under_two_minutes(tmp_path):
+def test_atlas_default_builds_whole(tmp_path):
     t0 = time.perf_counter()
     result = build_atlas(out_dir=tmp_path, progress=False)
     wall = time.perf_counter() - t0
-    assert wall < 120.0
+    assert wall < 900.0  # a hang guard only; the atlas's speed is measured in benchmarks/
     for ref in _referenced(result.index.read_text(encoding="utf-8")):
         assert (tmp_path / ref).is_file()
 
