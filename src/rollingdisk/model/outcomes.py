@@ -39,7 +39,7 @@ class Outcome:
 
 # integer codes, shared with the compiled integrators (numba reads them as globals)
 RUNNING, COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED, STEP_BUDGET = range(7)
-BOUNDED, STEADY, AT_REST = 7, 8, 9
+BOUNDED, STEADY, AT_REST, TIME_BUDGET = 7, 8, 9, 10
 
 #: Every outcome, by code.  ``running`` is the kernels' "not ended yet" and never a result.
 OUTCOMES = (
@@ -58,6 +58,8 @@ OUTCOMES = (
     Outcome(STEADY, "steady", "exact motion: the state is a steady motion (theta "
             "constant)"),
     Outcome(AT_REST, "at-rest", "the disk came to rest"),
+    Outcome(TIME_BUDGET, "time-budget", "the wall-clock budget (max_wall_time) was spent "
+            "before the end"),
 )
 _BY_NAME = {o.name: o for o in OUTCOMES}
 _BY_CODE = {o.code: o for o in OUTCOMES}
