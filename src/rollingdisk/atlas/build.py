@@ -217,12 +217,21 @@ def _write_atlas(h, out: Path, chosen, *, quick: bool, pr: _Progress) -> tuple[l
 
 def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
     """The steps of :func:`_write_atlas`, with the Euler's-disk helper process running."""
-    from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
+    thr = _thresholds_step(h, out, pr, files)
+    _map_steps(h, out, quick=quick, pr=pr, files=files, dpi=dpi, n_map=n_map)
+    motions = _motion_steps(h, out, chosen, quick=quick, pr=pr, files=files, dpi=dpi,
+                            euler=euler)
+    # 10. index page ------------------------------------------------------------------------
+    pr.step("index.html")
+    (out / "index.html").write_text(_index_html(h, thr, motions, [p.name for p in files]),
+                                    encoding="utf-8")
+    pr.done()
+    return files, motions
 
-    from rollingdisk.plotting import plots as plotting
-    from rollingdisk.plotting.animation import animate
+
+def _thresholds_step(h, out, pr, files) -> dict:
+    """Step 1: ``thresholds.json``; the thresholds as a dict."""
     from rollingdisk.theory.oscillations import thresholds
-    from rollingdisk.theory.regions import STABLE
 
     # 1. thresholds ------------------------------------------------------------------
     pr.step("thresholds")
@@ -231,6 +240,15 @@ def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
         json.dumps({"h": h, **_floats(thr)}, indent=2, allow_nan=False))
     files.append(out / "thresholds.json")
     pr.done()
+    return thr
+
+
+def _map_steps(h, out, *, quick, pr, files, dpi, n_map):
+    """Steps 2-4: the existence, stability, varpi^2 and stable-for-every-omega30 maps."""
+    from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
+
+    from rollingdisk.plotting import plots as plotting
+    from rollingdisk.theory.regions import STABLE
 
     # 2. existence maps -------------------------------------------------------------
     pr.step("existence maps")
@@ -273,6 +291,10 @@ def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
     _save(fig, out / "all_omega30.png", dpi, files)
     pr.done()
 
+
+def _motion_steps(h, out, chosen, *, quick, pr, files, dpi, euler) -> dict:
+    """Steps 6-9: the two steady circles simulated and animated, the exact motion, and
+    Euler's disk (run by the helper since the start); their records by name."""
     # (no compile step: the two short runs below run the integrator uncompiled, so a cold
     # atlas never waits for numba; see docs/simulation.md)
     # 6./7. two steady motions, simulated; the first animation is drawn in a second process
@@ -282,26 +304,8 @@ def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
     try:
         for kind in ("stable", "unstable"):
             pr.step(f"{kind} steady circle: simulate, plot, animate")
-            chosen_motion = getattr(chosen, kind)
-            theta0, Omega0 = chosen_motion.theta0, chosen_motion.Omega0
-            t_end = 12.0 if quick else 30.0
-            kick = 0.05 if kind == "stable" else 1e-4
-            motion, stab, traj = steady_trajectory(h, "rough", theta0, Omega0=Omega0,
-                                                   kick=kick, t_end=t_end,
-                                                   n_out=300 if quick else 1500)
-            fig = Figure(figsize=(9.0, 6.5))
-            plotting.plot_trajectory(traj, fig, theta0=theta0,
-                                     title=f"{kind} steady circle, rough ground, h = {h:.4g}")
-            _save(fig, out / f"motion_{kind}.png", dpi, files)
-            gif = out / f"motion_{kind}.gif"
-            kw = dict(n_frames=6 if quick else 60, fps=12, dpi=55 if quick else 70,
-                      title=f"{kind} circle, h = {h:.4g}")
-            if kind == "stable" and (os.cpu_count() or 1) > 1:
-                helpers.append(_start_animation(traj, gif, kw))
-            else:
-                animate(traj, gif, **kw)
-            files.append(gif)
-            motions[kind] = _motion_record(motion, stab, traj, kick)
+            motions[kind] = _circle_step(h, kind, getattr(chosen, kind), out, quick=quick,
+                                         files=files, dpi=dpi, helpers=helpers)
             pr.done(f"status {motions[kind]['status']}")
         # 8. the stable circle's exact motion at finite amplitude (while the helper draws)
         pr.step("exact motion: quadrature, rosette, backbone")
@@ -309,12 +313,7 @@ def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
         pr.done(f"period {motions['exact']['period']:.6g}")
         # 9. Euler's disk, run alongside since the start
         pr.step("Euler's disk (run alongside)")
-        euler.join()
-        if euler.exitcode != 0:
-            raise RuntimeError(f"the Euler's disk process ended with exit code "
-                               f"{euler.exitcode}")
-        motions["euler_disk"] = json.loads((out / "euler_disk.json").read_text())
-        files += [out / "euler_disk.png", out / "euler_disk.json"]
+        motions["euler_disk"] = _join_euler_disk(euler, out, files)
         ed = motions["euler_disk"]
         pr.done(f"{ed['end']} at {ed['t_end_s']:.4g} s")
         for proc in helpers:
@@ -327,13 +326,48 @@ def _write_atlas_steps(h, out, chosen, *, quick, pr, files, dpi, n_map, euler):
             if proc.is_alive():
                 proc.terminate()
                 proc.join()
+    return motions
 
-    # 10. index page ------------------------------------------------------------------------
-    pr.step("index.html")
-    (out / "index.html").write_text(_index_html(h, thr, motions, [p.name for p in files]),
-                                    encoding="utf-8")
-    pr.done()
-    return files, motions
+
+def _circle_step(h, kind, chosen_motion, out, *, quick, files, dpi, helpers) -> dict:
+    """One steady circle (``kind`` "stable" or "unstable"): simulated from a kick, plotted
+    and animated (the stable one in a helper process, appended to ``helpers``)."""
+    from matplotlib.figure import Figure
+
+    from rollingdisk.plotting import plots as plotting
+    from rollingdisk.plotting.animation import animate
+
+    theta0, Omega0 = chosen_motion.theta0, chosen_motion.Omega0
+    t_end = 12.0 if quick else 30.0
+    kick = 0.05 if kind == "stable" else 1e-4
+    motion, stab, traj = steady_trajectory(h, "rough", theta0, Omega0=Omega0,
+                                           kick=kick, t_end=t_end,
+                                           n_out=300 if quick else 1500)
+    fig = Figure(figsize=(9.0, 6.5))
+    plotting.plot_trajectory(traj, fig, theta0=theta0,
+                             title=f"{kind} steady circle, rough ground, h = {h:.4g}")
+    _save(fig, out / f"motion_{kind}.png", dpi, files)
+    gif = out / f"motion_{kind}.gif"
+    kw = dict(n_frames=6 if quick else 60, fps=12, dpi=55 if quick else 70,
+              title=f"{kind} circle, h = {h:.4g}")
+    if kind == "stable" and (os.cpu_count() or 1) > 1:
+        helpers.append(_start_animation(traj, gif, kw))
+    else:
+        animate(traj, gif, **kw)
+    files.append(gif)
+    return _motion_record(motion, stab, traj, kick)
+
+
+def _join_euler_disk(euler, out, files) -> dict:
+    """Wait for the Euler's-disk helper; its JSON summary (its two files added to
+    ``files``)."""
+    euler.join()
+    if euler.exitcode != 0:
+        raise RuntimeError(f"the Euler's disk process ended with exit code "
+                           f"{euler.exitcode}")
+    record = json.loads((out / "euler_disk.json").read_text())
+    files += [out / "euler_disk.png", out / "euler_disk.json"]
+    return record
 
 
 def _exact_section(motion, out: Path, dpi: int, files: list) -> dict:
@@ -484,7 +518,15 @@ family:</p>
 
 
 def _index_html(h: float, thr: dict, motions: dict, names: list) -> str:
-    e = html.escape
+    """The atlas's ``index.html``: the thresholds, the maps, the two circles, the exact
+    motion, Euler's disk and the list of files."""
+    return (_head_html(h, _threshold_rows(thr)) + _MAPS_HTML
+            + _circles_html(motions) + _exact_html(motions["exact"])
+            + _tail_html(motions, names))
+
+
+def _threshold_rows(thr: dict) -> str:
+    """The rows of the table of thresholds, eqs. (42), (43), (53), (57)."""
     rows = [
         ("rough", "straight line (SE position), eq. (42)", "&omega;<sub>20</sub>&sup2; &gt;",
          thr["rough"]["straight_line_omega20_sq"]),
@@ -495,34 +537,13 @@ def _index_html(h: float, thr: dict, motions: dict, names: list) -> str:
         ("smooth", "spin in place, eq. (57)", "&omega;<sub>30</sub>&sup2; &gt;",
          thr["smooth"]["spin_omega30_sq"]),
     ]
-    thr_rows = "\n".join(
+    return "\n".join(
         f"<tr><td>{g}</td><td>{what}</td><td>{cond} {_fmt(v)}</td>"
         f"<td>{_fmt(math.sqrt(v))}</td></tr>" for g, what, cond, v in rows)
 
-    def motion_block(kind):
-        m = motions[kind]
-        verdict = (f"stable: &varpi;&sup2; = {_fmt(m['varpi2'])}, &varpi; = "
-                   f"{_fmt(m['varpi'])} (period {_fmt(m['period'])}); the simulation "
-                   f"oscillates at {_fmt(m['measured'])}" if m["stable"] else
-                   f"unstable: &varpi;&sup2; = {_fmt(m['varpi2'])}, growth rate "
-                   f"&radic;(&minus;&varpi;&sup2;) = {_fmt(m['growth_rate'])}; the simulation "
-                   f"grows at {_fmt(m['measured'])}")
-        return f"""
-<h3>{kind.capitalize()} steady circle</h3>
-<table><tr><th>&theta;<sub>0</sub> [rad]</th><th>&Omega;<sub>0</sub></th>
-<th>&omega;<sub>20</sub></th><th>&omega;<sub>30</sub></th><th>r<sub>C</sub></th>
-<th>r<sub>P</sub></th></tr>
-<tr><td>{_fmt(m['theta0'])}</td><td>{_fmt(m['Omega0'])}</td><td>{_fmt(m['omega20'])}</td>
-<td>{_fmt(m['omega30'])}</td><td>{_fmt(m['r_C'])}</td><td>{_fmt(m['r_P'])}</td></tr></table>
-<p>Closed form (section 4.1): {verdict}. Simulated from the steady state with a kick
-d&theta;/dt(0) = {_fmt(m['kick'], 2)} until t = {_fmt(m['t_end'])} (status
-<code>{e(m['status'])}</code>):
-largest |&theta; &minus; &theta;<sub>0</sub>| = {_fmt(m['max_theta_dev'], 3)}, largest energy
-error {_fmt(m['energy_error'], 2)} mga.</p>
-<div class="pair"><img src="motion_{kind}.png" alt="{kind} motion plots" width="620">
-<img src="motion_{kind}.gif" alt="{kind} motion animation" width="350"></div>"""
 
-    ex = motions["exact"]
+def _head_html(h: float, thr_rows: str) -> str:
+    """The page's head, introduction and table of thresholds."""
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
 <title>rollingdisk atlas, h = {h:.4g}</title><style>{_CSS}</style></head><body>
@@ -543,7 +564,11 @@ for where they differ from the printed paper).</p>
 </tr>
 {thr_rows}</table>
 
-<h2>Where steady circles exist</h2>
+"""
+
+
+#: The sections on the maps (no numbers in them: the figures carry them).
+_MAPS_HTML = """<h2>Where steady circles exist</h2>
 <p>Rough ground: in the (&theta;<sub>0</sub>, r<sub>C</sub>) plane a steady circle exists
 where &Omega;<sub>0</sub>&sup2; of eq. (31) is positive; dark: none, gray: it exists but is
 unstable (&varpi;&sup2; &lt; 0), white: stable. The red curve is r<sub>C</sub>* of eq. (32),
@@ -573,17 +598,53 @@ which a disturbance grows.</p>
 marks this disk.</p>
 <img src="all_omega30.png" alt="regions stable for every omega30">
 
-<h2>Two steady circles, simulated</h2>
+"""
+
+
+def _circles_html(motions: dict) -> str:
+    """The section on the two simulated steady circles."""
+    return f"""<h2>Two steady circles, simulated</h2>
 <p>Each motion starts on the steady circle with a small kick d&theta;/dt, and is integrated
 with the full nonlinear equations (rough ground: eqs. (1), (2), (37), (38)). The plots show
 the paths of C and of the contact point P, &theta;(t), the energy error and the contact force
 (F<sub>z</sub> &gt; 0 keeps contact). The animation draws the disk as a cylinder of thickness
 2h; the red sectors are fixed in the body, so they show the rotation &phi;; the red line on the
 plane is the path of P.</p>
-{motion_block("stable")}
-{motion_block("unstable")}
+{_motion_block(motions, "stable")}
+{_motion_block(motions, "unstable")}
 
-<h2>The stable circle at finite amplitude: the exact motion</h2>
+"""
+
+
+def _motion_block(motions: dict, kind: str) -> str:
+    """The block of one simulated steady circle (``kind`` "stable" or "unstable")."""
+    e = html.escape
+    m = motions[kind]
+    verdict = (f"stable: &varpi;&sup2; = {_fmt(m['varpi2'])}, &varpi; = "
+               f"{_fmt(m['varpi'])} (period {_fmt(m['period'])}); the simulation "
+               f"oscillates at {_fmt(m['measured'])}" if m["stable"] else
+               f"unstable: &varpi;&sup2; = {_fmt(m['varpi2'])}, growth rate "
+               f"&radic;(&minus;&varpi;&sup2;) = {_fmt(m['growth_rate'])}; the simulation "
+               f"grows at {_fmt(m['measured'])}")
+    return f"""
+<h3>{kind.capitalize()} steady circle</h3>
+<table><tr><th>&theta;<sub>0</sub> [rad]</th><th>&Omega;<sub>0</sub></th>
+<th>&omega;<sub>20</sub></th><th>&omega;<sub>30</sub></th><th>r<sub>C</sub></th>
+<th>r<sub>P</sub></th></tr>
+<tr><td>{_fmt(m['theta0'])}</td><td>{_fmt(m['Omega0'])}</td><td>{_fmt(m['omega20'])}</td>
+<td>{_fmt(m['omega30'])}</td><td>{_fmt(m['r_C'])}</td><td>{_fmt(m['r_P'])}</td></tr></table>
+<p>Closed form (section 4.1): {verdict}. Simulated from the steady state with a kick
+d&theta;/dt(0) = {_fmt(m['kick'], 2)} until t = {_fmt(m['t_end'])} (status
+<code>{e(m['status'])}</code>):
+largest |&theta; &minus; &theta;<sub>0</sub>| = {_fmt(m['max_theta_dev'], 3)}, largest energy
+error {_fmt(m['energy_error'], 2)} mga.</p>
+<div class="pair"><img src="motion_{kind}.png" alt="{kind} motion plots" width="620">
+<img src="motion_{kind}.gif" alt="{kind} motion animation" width="350"></div>"""
+
+
+def _exact_html(ex: dict) -> str:
+    """The section on the stable circle's exact motion at finite amplitude."""
+    return f"""<h2>The stable circle at finite amplitude: the exact motion</h2>
 <p>On rough and smooth ground the disk is integrable: &omega;<sub>2</sub>,
 &omega;<sub>3</sub> and (d&theta;/dt)&sup2; are functions of &theta; alone, and time,
 &psi; and the contact point's path follow by quadrature (<code>rollingdisk exact</code>,
@@ -598,7 +659,13 @@ against amplitude, which starts at &varpi; and reaches
 {_fmt(ex['largest_amplitude'], 3)}.</p>
 <img src="exact.png" alt="exact motion: theta over a period, rosette, backbone">
 
-{_euler_block(motions["euler_disk"])}
+"""
+
+
+def _tail_html(motions: dict, names: list) -> str:
+    """Euler's disk and the list of files."""
+    e = html.escape
+    return f"""{_euler_block(motions["euler_disk"])}
 
 <h2>Files</h2>
 <p class="note">{" &middot; ".join(f'<a href="{e(n)}">{e(n)}</a>' for n in names)}</p>
