@@ -213,7 +213,7 @@ def test_budget_and_arguments():
     disk = rd.Disk(0.0)
     y = [0, 0, 1, 0, 0, 0.5, 0, 0, 0, 0]
     tr = simulate_coulomb(disk, Coulomb(0.2), (0, 100), y, max_steps=3)
-    assert tr.status == "failed" and "step budget" in tr.message
+    assert tr.status == "step-budget" and "step budget" in tr.message
     with pytest.raises(ParameterError, match="ground"):
         simulate_coulomb(disk, "rough", (0, 1), y)
     with pytest.raises(ParameterError, match="t_span"):

@@ -10,9 +10,10 @@ import numpy as np
 
 from rollingdisk.friction.ground import Coulomb, _coulomb_moments, _coulomb_powers
 from rollingdisk.model.disk import Disk
+from rollingdisk.model.equations import _check_disk
 from rollingdisk.model.geometry import _geometry, _inertia
 from rollingdisk.model.state import SMOOTH_STATE, _as_state
-from rollingdisk.util.errors import ParameterError
+from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["COULOMB_STATE", "MODE_NAMES", "coulomb_rhs", "coulomb_contact", "coulomb_energy",
            "rolling_state"]
@@ -180,10 +181,13 @@ def _rolling_velocity(h, y):
 
 
 # ------------------------------------------------------------------- public wrappers
-def _check_coulomb(ground):
+def _check_coulomb(ground, name: str = "ground"):
+    """``ground`` if it is a :class:`Coulomb` value; a ground's name (``"rough"``) is the
+    wrong value (:class:`ParameterError`), anything else the wrong type."""
     if not isinstance(ground, Coulomb):
-        raise ParameterError(f"ground must be a rollingdisk.Coulomb(...) value here, got "
-                             f"{ground!r}")
+        error = ParameterError if isinstance(ground, str) else ParameterTypeError
+        raise error(f"{name} must be a rollingdisk.Coulomb(...) value here, got "
+                    f"{type(ground).__name__} {ground!r}")
     return ground
 
 
@@ -214,6 +218,7 @@ def coulomb_rhs(disk: Disk, ground, mode, y, slip_reference=None) -> np.ndarray:
     -------
     ndarray, shape (10,)
     """
+    _check_disk(disk)
     g = _check_coulomb(ground)
     y = _as_state("smooth", y)
     cr, cpv, ca = g.coefficients
@@ -242,6 +247,7 @@ def coulomb_contact(disk: Disk, ground, mode, y) -> dict:
         powers ``power_rolling_resistance``, ``power_pivot``, ``power_air`` (``omega . M``
         of each moment; all powers ``<= 0``, eq. 14).
     """
+    _check_disk(disk)
     g = _check_coulomb(ground)
     y = _as_state("smooth", y)
     cr, cpv, ca = g.coefficients
@@ -260,6 +266,7 @@ def coulomb_contact(disk: Disk, ground, mode, y) -> dict:
 
 def coulomb_energy(disk: Disk, y):
     """Total mechanical energy (eq. 13) at a Coulomb state (layout :data:`COULOMB_STATE`)."""
+    _check_disk(disk)
     y = _as_state("smooth", y)
     return _coulomb_energy(disk.h, y)
 
@@ -267,6 +274,7 @@ def coulomb_energy(disk: Disk, y):
 def rolling_state(disk: Disk, y_rough) -> np.ndarray:
     """The Coulomb (smooth-layout) state of a rough-ground state: ``V_X, V_Y`` from the
     no-slip condition (eq. 37) rotated into OXYZ (eq. 1)."""
+    _check_disk(disk)
     y_rough = _as_state("rough", y_rough)
     X_C, Y_C, psi, theta, phi, w1, w2, w3 = y_rough
     y = np.array([X_C, Y_C, 0.0, 0.0, psi, theta, phi, w1, w2, w3])

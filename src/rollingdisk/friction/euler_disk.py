@@ -678,8 +678,17 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
     >>> r.status, r.end
     ('failed', None)
     """
-    from scipy.integrate import LSODA
+    toy, alpha_end, t_max, rtol, atol, max_steps, max_wall_time, kick, (lo, hi) = \
+        _check_run_arguments(toy, alpha_end, t_max, rtol, atol, max_steps, max_wall_time,
+                             kick, fit_window)
+    run = _ToyRun(toy, alpha_end, t_max, rtol, atol, kick)
+    run.integrate(max_steps, max_wall_time, progress)
+    return _result(run, (lo, hi), predict)
 
+
+def _check_run_arguments(toy, alpha_end, t_max, rtol, atol, max_steps, max_wall_time, kick,
+                         fit_window):
+    """The validated arguments of :func:`run_euler_disk`, ``fit_window`` as ``(lo, hi)``."""
     toy = EulerDisk() if toy is None else toy
     if not isinstance(toy, EulerDisk):
         raise ParameterError(f"toy must be an EulerDisk, got {type(toy).__name__}")
@@ -698,112 +707,154 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
     if not lo < hi < toy.alpha0:
         raise ParameterError(f"fit_window must satisfy 0 < lo < hi < alpha0 = "
                              f"{toy.alpha0:g}, got {fit_window!r}")
+    return toy, alpha_end, t_max, rtol, atol, max_steps, max_wall_time, kick, (lo, hi)
 
-    h, mu, c_roll, c_air, eps = toy.h, toy.mu, toy.rolling_resistance, toy.c_air, toy.omega_eps
-    u_s = 3.0 * mu / toy.creep if mu > 0 else 1.0  # mu = 0: no friction at all
 
-    last = [1.0]  # F_z of the latest evaluation (near the accepted point) for lift-off
+class _ToyRun:
+    """One run of :func:`run_euler_disk`: the LSODA solver on the creep equations, the
+    recorded steps, and how the run ended (``end``, ``status``, ``message``)."""
 
-    def f(t, x):
-        dx, last[0], _ = _rhs(h, mu, u_s, c_roll, c_air, eps, x)
+    def __init__(self, toy, alpha_end, t_max, rtol, atol, kick):
+        from scipy.integrate import LSODA
+
+        self.toy, self.alpha_end, self.t_max, self.rtol = toy, alpha_end, t_max, rtol
+        self.start = time.monotonic()
+        mu = toy.mu
+        u_s = 3.0 * mu / toy.creep if mu > 0 else 1.0  # mu = 0: no friction at all
+        self.params = (toy.h, mu, u_s, toy.rolling_resistance, toy.c_air, toy.omega_eps)
+        self.last = [1.0]  # F_z of the latest evaluation (near the accepted point) for lift-off
+        x0 = _initial_state(toy)
+        x0[3] += kick
+        x0[1] = kick * _geometry(toy.h, x0[2])[5]  # v_Cy = omega1 z_P: still rolling (6)
+        self.solver = LSODA(self._f, 0.0, x0, t_max, rtol=rtol, atol=atol)
+        self.ts, self.xs = [0.0], [x0.copy()]
+        self.log_span = math.log(toy.alpha0 / alpha_end)
+        self.end = None
+        self.status, self.message = "failed", ""
+        F_z0 = _rhs(*self.params, x0)[1]
+        if F_z0 < 0.0:  # the kick asks for a pull from the plane: no motion in contact at all
+            self.end, self.status = "lift-off", "completed"
+            self.message = f"lifted off at the start: F_z(0) = {F_z0:.4g} < 0 (eq. 11)"
+        self.n = 0
+        self.n_short = 0
+        self.shown = -1.0
+        self.side = math.copysign(1.0, x0[2])
+
+    def _f(self, t, x):
+        dx, self.last[0], _ = _rhs(*self.params, x)
         return dx
 
-    start = time.monotonic()
-    x0 = _initial_state(toy)
-    x0[3] += kick
-    x0[1] = kick * _geometry(toy.h, x0[2])[5]  # v_Cy = omega1 z_P: still rolling (6)
-    solver = LSODA(f, 0.0, x0, t_max, rtol=rtol, atol=atol)
-    ts, xs = [0.0], [x0.copy()]
-    log_span = math.log(toy.alpha0 / alpha_end)
-    end = None
-    status, message = "failed", ""
-    F_z0 = _rhs(h, mu, u_s, c_roll, c_air, eps, x0)[1]
-    if F_z0 < 0.0:  # the kick asks for a pull from the plane: no motion in contact at all
-        end, status = "lift-off", "completed"
-        message = f"lifted off at the start: F_z(0) = {F_z0:.4g} < 0 (eq. 11)"
-    n_short = 0
-    shown = -1.0
-    side = math.copysign(1.0, x0[2])
-    n = 0
-    while end is None:
-        if solver.status == "finished":
-            message = f"reached t_max = {t_max:g} before any end (alpha = " \
-                      f"{math.pi / 2 - abs(xs[-1][2]):.3g})"
-            break
-        if n >= max_steps:
-            message = f"step budget exhausted: max_steps = {max_steps} steps reached at " \
-                      f"t = {ts[-1]:.6g} without an end"
-            break
-        if time.monotonic() - start > max_wall_time:
-            message = f"wall-clock budget exhausted: max_wall_time = {max_wall_time:g} s " \
-                      f"reached at t = {ts[-1]:.6g} without an end"
-            break
-        t_old = solver.t
-        msg = solver.step()
-        n += 1
-        if solver.status == "failed":
-            message = f"LSODA failed at t = {solver.t:.6g}: {msg}"
-            break
-        x = solver.y
-        if not math.isfinite(x.sum()):
-            message = f"the state left floating-point range at t = {solver.t:.6g}"
-            break
-        ts.append(solver.t)
-        xs.append(x.copy())
-        F_z = last[0]
+    def integrate(self, max_steps, max_wall_time, progress):
+        """Step until an end, a budget, ``t_max`` or a failure (``message`` says which)."""
+        solver = self.solver
+        while self.end is None:
+            if self._stopped(max_steps, max_wall_time):
+                break
+            t_old = solver.t
+            msg = solver.step()
+            self.n += 1
+            if solver.status == "failed":
+                self.message = f"LSODA failed at t = {solver.t:.6g}: {msg}"
+                break
+            x = solver.y
+            if not math.isfinite(x.sum()):
+                self.message = f"the state left floating-point range at t = {solver.t:.6g}"
+                break
+            self.ts.append(solver.t)
+            self.xs.append(x.copy())
+            if self._ended(x, t_old, progress):
+                break
+        if progress is not None:
+            progress(1.0 if self.end is not None else self._done(
+                math.pi / 2 - abs(self.xs[-1][2])))
+
+    def _stopped(self, max_steps, max_wall_time):
+        """True (message set) if the run reached ``t_max`` or spent a budget."""
+        if self.solver.status == "finished":
+            self.message = f"reached t_max = {self.t_max:g} before any end (alpha = " \
+                           f"{math.pi / 2 - abs(self.xs[-1][2]):.3g})"
+        elif self.n >= max_steps:
+            self.message = f"step budget exhausted: max_steps = {max_steps} steps reached " \
+                           f"at t = {self.ts[-1]:.6g} without an end"
+        elif time.monotonic() - self.start > max_wall_time:
+            self.message = f"wall-clock budget exhausted: max_wall_time = " \
+                           f"{max_wall_time:g} s reached at t = {self.ts[-1]:.6g} without an end"
+        else:
+            return False
+        return True
+
+    def _done(self, alpha):
+        """The fraction of the run done at tilt ``alpha``, on a log scale."""
+        return min(max(math.log(self.toy.alpha0 / max(alpha, 1e-300)) / self.log_span, 0.0),
+                   1.0)
+
+    def _ended(self, x, t_old, progress):
+        """Check the ends after an accepted step to state ``x``; True if the run ended
+        (``end``, ``status``, ``message`` set, the end located on the step) or the step
+        sizes collapsed."""
+        solver, params = self.solver, self.params
+        F_z = self.last[0]
         if F_z < 0.0:  # confirm at the accepted state itself
-            F_z = _rhs(h, mu, u_s, c_roll, c_air, eps, x)[1]
-        n_short = n_short + 1 if solver.t - t_old < 1e-12 * (1.0 + abs(solver.t)) else 0
+            F_z = _rhs(*params, x)[1]
+        tiny = solver.t - t_old < 1e-12 * (1.0 + abs(solver.t))
+        self.n_short = self.n_short + 1 if tiny else 0
         alpha = math.pi / 2 - abs(x[2])
-        if progress is not None and n % 100 == 0:
-            done = min(max(math.log(toy.alpha0 / max(alpha, 1e-300)) / log_span, 0.0), 1.0)
-            if done >= shown + 0.005:  # a few hundred updates per run, not one per step
-                shown = done
+        if progress is not None and self.n % 100 == 0:
+            done = self._done(alpha)
+            if done >= self.shown + 0.005:  # a few hundred updates per run, not one per step
+                self.shown = done
                 progress(done)
         event = None  # a function of the state that changes sign at the end
+        alpha_end, side = self.alpha_end, self.side
         if alpha <= alpha_end:
-            end, message = "fell-flat", f"fell flat: alpha = {alpha_end:g}"
+            self.end, self.message = "fell-flat", f"fell flat: alpha = {alpha_end:g}"
             event = lambda z: math.pi / 2 - abs(z[2]) - alpha_end  # noqa: E731
         elif F_z < 0.0:
-            end, message = "lift-off", "lifted off: F_z = 0 (eq. 11)"
-            event = lambda z: _rhs(h, mu, u_s, c_roll, c_air, eps, z)[1]  # noqa: E731
+            self.end, self.message = "lift-off", "lifted off: F_z = 0 (eq. 11)"
+            event = lambda z: _rhs(*params, z)[1]  # noqa: E731
         elif math.copysign(1.0, x[2]) != side:
-            end, message = "edge-contact", "theta = 0: the other rim edge touches"
+            self.end, self.message = "edge-contact", "theta = 0: the other rim edge touches"
             event = lambda z: z[2] * side  # noqa: E731
         elif max(abs(v) for v in x[:2]) < 1e-10 and max(abs(v) for v in x[3:6]) < 1e-10:
-            end, message = "at-rest", "came to rest: |omega|, |v_C| < 1e-10"
-        if end is not None:
+            self.end, self.message = "at-rest", "came to rest: |omega|, |v_C| < 1e-10"
+        if self.end is not None:
             if event is not None:  # locate it on the step's dense output
-                ts[-1], xs[-1] = _locate(solver.dense_output(), event, t_old, solver.t)
-            status = "completed"
-            message += f" at t = {ts[-1]:.6g} ({ts[-1] * toy.time_unit:.4g} s)"
-            break
-        if n_short >= 50:
-            message = f"step sizes collapsed (50 steps shorter than 1e-12 (1 + t)) at " \
-                      f"t = {solver.t:.6g}: the model is too stiff here for rtol = {rtol:g}"
-            break
-    if progress is not None:
-        progress(1.0 if end is not None else min(max(
-            math.log(toy.alpha0 / max(math.pi / 2 - abs(xs[-1][2]), 1e-300)) / log_span,
-            0.0), 1.0))
-    t = np.array(ts)
-    X = np.array(xs)
+                self.ts[-1], self.xs[-1] = _locate(solver.dense_output(), event, t_old,
+                                                   solver.t)
+            self.status = "completed"
+            self.message += f" at t = {self.ts[-1]:.6g} ({self.ts[-1] * self.toy.time_unit:.4g} s)"
+            return True
+        if self.n_short >= 50:
+            self.message = f"step sizes collapsed (50 steps shorter than 1e-12 (1 + t)) at " \
+                           f"t = {solver.t:.6g}: the model is too stiff here for rtol = " \
+                           f"{self.rtol:g}"
+            return True
+        return False
+
+
+def _result(run, window, predict):
+    """The :class:`EulerDiskResult` of a finished :class:`_ToyRun`: observables along the
+    run, the energy balance, fitted and predicted exponents."""
+    toy, params = run.toy, run.params
+    h = toy.h
+    t = np.array(run.ts)
+    X = np.array(run.xs)
     XT = X.T  # (9, N): every recorded quantity in one element-wise call
     alpha, Omega, vp = _observables(h, XT)
-    _, fz, us = _rhs(h, mu, u_s, c_roll, c_air, eps, XT)
+    _, fz, us = _rhs(*params, XT)
     E = _energy(h, XT)
     dissipated = {k: X[:, 6 + i] for i, k in enumerate(TERMS)}
     total = E + X[:, 6:].sum(axis=1)
     balance = float(np.max(np.abs(total - total[0])) / max(abs(total[0]), 1.0))
-    t0, fitted = _fit_exponents(t, alpha, Omega, vp, (lo, hi))
-    predicted = (predicted_exponents(toy, (lo, hi)) if predict
+    t0, fitted = _fit_exponents(t, alpha, Omega, vp, window)
+    predicted = (predicted_exponents(toy, window) if predict
                  else {k: math.nan for k in EXPONENT_NAMES})
-    pred_end, pred_t0 = (predicted_end_time(toy, alpha_end) if predict
+    pred_end, pred_t0 = (predicted_end_time(toy, run.alpha_end) if predict
                          else (math.nan, math.nan))
     return EulerDiskResult(toy=toy, t=t, alpha=alpha, Omega=Omega, contact_speed=vp,
                            slip_speed=us, F_z=fz, E=E,
-                           dissipated=dissipated, t_end=float(t[-1]), end=end, status=status,
-                           message=message, t0=t0, exponents=fitted, predicted=predicted,
-                           fit_window=(lo, hi), predicted_t_end=pred_end,
-                           predicted_t0=pred_t0, energy_balance=balance, n_steps=n,
-                           wall_time=time.monotonic() - start, extra={"state": X})
+                           dissipated=dissipated, t_end=float(t[-1]), end=run.end,
+                           status=run.status, message=run.message, t0=t0, exponents=fitted,
+                           predicted=predicted, fit_window=window, predicted_t_end=pred_end,
+                           predicted_t0=pred_t0, energy_balance=balance, n_steps=run.n,
+                           wall_time=time.monotonic() - run.start, extra={"state": X})

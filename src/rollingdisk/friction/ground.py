@@ -20,13 +20,12 @@ units (m = a = g = 1); the physical meaning of each coefficient is in ``docs/fri
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from rollingdisk.model.disk import GROUNDS
-from rollingdisk.util.checks import check_real
+from rollingdisk.util.checks import check_real, real_array
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["Coulomb", "RollingResistance", "PivotFriction", "AirDrag", "check_any_ground",
@@ -41,6 +40,9 @@ def angular_velocity_xyz(theta, omega1, omega2, omega3):
     ``omega_z = omega2 sin(theta) + omega3 cos(theta)`` (``omega_z = d psi/dt + ...``, the
     spin about the vertical).  Element-wise on arrays.
     """
+    for name, value in (("theta", theta), ("omega1", omega1), ("omega2", omega2),
+                        ("omega3", omega3)):
+        real_array(name, value)  # named errors for non-numbers and ints beyond float range
     s, c = np.sin(theta), np.cos(theta)
     return omega1, omega2 * c - omega3 * s, omega2 * s + omega3 * c
 
@@ -196,6 +198,21 @@ class AirDrag:
         return _power(2, 0.0, 0.0, self.c, theta, omega1, omega2, omega3, 0.0)
 
 
+#: Largest friction coefficient :class:`Coulomb` takes: beyond it the ground is rough for
+#: every purpose (the friction a rolling disk needs is of order 1), and ``mu F_z`` would only
+#: bring the sliding equations to the edge of floating-point range (issue 18, item 4).
+MU_MAX = 1e6
+
+
+def _check_mu(name, value):
+    mu = check_real(name, value, low=0.0)
+    if mu > MU_MAX:
+        raise ParameterError(f"{name} must lie in [0, {MU_MAX:g}], got {mu!r}: beyond it the "
+                             "ground is perfectly rough for every purpose; use the rough "
+                             "ground (rolling without slip) instead")
+    return mu
+
+
 def _model(name, cls, value):
     if value is None or isinstance(value, cls):
         return value
@@ -203,7 +220,8 @@ def _model(name, cls, value):
                                                                  np.floating)):
         raise ParameterTypeError(f"{name} must be a {cls.__name__} or a real number >= 0, got "
                                  f"{type(value).__name__} {value!r}")
-    return cls(value) if float(value) != 0.0 or not math.isfinite(float(value)) else None
+    value = check_real(name, value, low=0.0)  # NaN, infinities, 10**400: named errors
+    return cls(value) if value != 0.0 else None
 
 
 @dataclass(frozen=True)
@@ -249,8 +267,8 @@ class Coulomb:
     air: AirDrag | None = None
 
     def __post_init__(self):
-        mu_s = check_real("mu_s", self.mu_s, low=0.0)
-        mu_k = mu_s if self.mu_k is None else check_real("mu_k", self.mu_k, low=0.0)
+        mu_s = _check_mu("mu_s", self.mu_s)
+        mu_k = mu_s if self.mu_k is None else _check_mu("mu_k", self.mu_k)
         if mu_k > mu_s:
             raise ParameterError(f"mu_k must lie in [0, mu_s] = [0, {mu_s:g}] (kinetic "
                                  f"friction cannot exceed static friction), got {mu_k!r}")

@@ -20,8 +20,10 @@ Integration: scipy's ``DOP853`` stepped one step at a time; after each step ever
 function is evaluated on the step's dense output (at 9 points) and a sign change is located
 by ``brentq`` on ``sol(t)``, never only at step ends.  The energy dissipated by each term is
 integrated as four extra quadrature states, so ``E + dissipated = const`` (eq. 12) can be
-checked along a run.  A step budget, a transition budget and a minimal step size bound the
-work: the run then ends with status ``"failed"`` and a message, never a hang.
+checked along a run.  A step budget (status ``"step-budget"``), a wall-clock budget
+(``"time-budget"``), a transition budget and a minimal step size (``"failed"``) bound the
+work, each with a message, never a hang; a cap on the stored points (thinning beyond it)
+bounds the memory.
 """
 
 from __future__ import annotations
@@ -35,14 +37,16 @@ from functools import cached_property
 import numpy as np
 
 from rollingdisk.friction import coulomb as _cl
-from rollingdisk.friction.coulomb import MODE_NAMES, coulomb_contact
+from rollingdisk.friction.coulomb import MODE_NAMES, _check_coulomb, coulomb_contact
 from rollingdisk.friction.ground import Coulomb
 from rollingdisk.integrate.simulation import _check_state
 from rollingdisk.integrate.trajectory import Trajectory, Transition
 from rollingdisk.model.disk import Disk
+from rollingdisk.model.equations import _check_disk
 from rollingdisk.model.geometry import _geometry
-from rollingdisk.util.checks import check_real
-from rollingdisk.util.errors import ParameterError
+from rollingdisk.model.state import _as_state
+from rollingdisk.util.checks import check_real, real_array
+from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["simulate_coulomb", "slip_direction", "energy_balance", "DISSIPATION_TERMS"]
 
@@ -86,10 +90,10 @@ def slip_direction(disk: Disk, ground: Coulomb, y) -> tuple[float, float] | None
     ``brentq`` on ``d x du/dt = 0``; among the roots with ``d . du/dt > 0`` the one of
     largest slip acceleration.  ``None`` if there is none (the disk can keep rolling).
     """
-    h = disk.h
-    mu_k = ground.mu_k
+    h = _check_disk(disk).h
+    mu_k = _check_coulomb(ground).mu_k
     coeffs = ground.coefficients
-    y = np.asarray(y, dtype=float)
+    y = _as_state("smooth", y)
 
     from scipy.optimize import brentq
 
@@ -120,6 +124,9 @@ def slip_direction(disk: Disk, ground: Coulomb, y) -> tuple[float, float] | None
 def energy_balance(traj: Trajectory) -> float:
     """Largest relative violation of ``E + dissipated = const`` along a Coulomb run (eq. 12),
     relative to ``max(|E(0)|, 1)``."""
+    if not isinstance(traj, Trajectory):
+        raise ParameterTypeError(f"traj must be a rollingdisk.Trajectory, got "
+                                 f"{type(traj).__name__} {traj!r}")
     if traj.dissipated is None:
         raise ParameterError("energy_balance needs a Coulomb-ground trajectory")
     total = traj.E + sum(traj.dissipated.values())
@@ -210,9 +217,21 @@ class CoulombTrajectory(Trajectory):
         return tuple(np.array([r[k] for r in rows]) for k in ("F_x", "F_y", "F_z"))
 
 
+#: Default budgets of :func:`simulate_coulomb`.  A step of this path (scipy's DOP853 with
+#: events on each step's dense output, in Python) costs about 0.1-1 ms, so 200 000 steps
+#: are 20 s to 3 min; the wall-clock budget bounds the slow end (issue 18, item 4).
+DEFAULT_MAX_STEPS = 200_000
+DEFAULT_MAX_WALL_TIME = 60.0
+#: Stored points beyond which every other regular step is dropped (memory: about 250 bytes
+#: a point); above the default step budget, so a run within it keeps every step.
+DEFAULT_MAX_POINTS = 500_000
+
+
 def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *,
                      rtol: float = 1e-11, atol: float = 1e-12, max_step: float = math.inf,
-                     max_steps: int = 2_000_000, max_transitions: int = 10_000,
+                     max_steps: int = DEFAULT_MAX_STEPS, max_transitions: int = 10_000,
+                     max_wall_time: float = DEFAULT_MAX_WALL_TIME,
+                     max_points: int = DEFAULT_MAX_POINTS,
                      slip_tol: float = 1e-12, alpha_min: float = 1e-8, guards: bool = True,
                      progress: Callable[[float], None] | None = None) -> Trajectory:
     """Integrate the disk on Coulomb ground: rolling and sliding with located transitions.
@@ -235,10 +254,19 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         Tolerances of DOP853.
     max_step : float
         Largest step.
-    max_steps, max_transitions : int
-        Budgets of steps and of mode events (transitions, and slip reversals or turns that
-        restart the integrator); beyond either the run stops with status ``"failed"`` and
-        says why.
+    max_steps : int
+        Step budget (default :data:`DEFAULT_MAX_STEPS`); once spent the run stops with
+        status ``"step-budget"`` and a message saying what to change.
+    max_transitions : int
+        Budget of mode events (transitions, and slip reversals or turns that restart the
+        integrator); beyond it the run stops with status ``"failed"`` and says why.
+    max_wall_time : float
+        Wall-clock budget in seconds, ``> 0`` (default :data:`DEFAULT_MAX_WALL_TIME`); once
+        spent the run stops with status ``"time-budget"`` and a message.
+    max_points : int
+        Most points stored, ``>= 16`` (default :data:`DEFAULT_MAX_POINTS`): beyond it every
+        other regular step is dropped (the first and last points and those of mode events are
+        kept) and from then on only every 2nd, 4th, ... step is stored; the message says so.
     slip_tol : float
         Relative slip below which the initial state counts as rolling.
     alpha_min : float
@@ -262,171 +290,308 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     >>> [(round(x.t, 9), x.from_mode, x.to_mode) for x in tr.transitions]
     [(1.666666667, 'sliding', 'rolling')]
     """
+    y, (t0, t1), options = _check_arguments(
+        disk, ground, t_span, y0, rtol=rtol, atol=atol, max_step=max_step,
+        max_steps=max_steps, max_transitions=max_transitions, max_wall_time=max_wall_time,
+        max_points=max_points, slip_tol=slip_tol, alpha_min=alpha_min)
+    hybrid = _Hybrid(disk, ground, t0, t1, y, options, guards, progress)
+    hybrid.integrate()
+    return hybrid.trajectory()
+
+
+def _check_arguments(disk, ground, t_span, y0, **options):
+    """The validated ``(y0, (t0, t1), options)`` of :func:`simulate_coulomb`."""
     if not isinstance(disk, Disk):
-        raise ParameterError(f"disk must be a rollingdisk.Disk, got {disk!r}")
-    if not isinstance(ground, Coulomb):
-        raise ParameterError(f"ground must be a rollingdisk.Coulomb(...) value, got {ground!r}")
-    y = _check_state(disk, "smooth", y0)
+        raise ParameterTypeError(f"disk must be a rollingdisk.Disk, got {type(disk).__name__} "
+                                 f"{disk!r}")
+    _check_coulomb(ground)
+    y = _check_state(disk, "smooth", real_array("y0", y0))
     try:
         t0, t1 = (float(v) for v in t_span)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise ParameterError(f"t_span must be a pair (t0, t1) of real numbers, got {t_span!r}") \
             from None
     if not (math.isfinite(t0) and math.isfinite(t1) and t1 > t0):
         raise ParameterError(f"t_span must be a pair (t0, t1) of finite numbers with t1 > t0, "
                              f"got {t_span!r}")
-    rtol = check_real("rtol", rtol, low=0.0, low_open=True)
-    atol = check_real("atol", atol, low=0.0, low_open=True)
-    if max_step != math.inf:
-        max_step = check_real("max_step", max_step, low=0.0, low_open=True)
-    slip_tol = check_real("slip_tol", slip_tol, low=0.0)
-    alpha_min = check_real("alpha_min", alpha_min, low=0.0, high=0.5 * math.pi, high_open=True)
-    for name, v in (("max_steps", max_steps), ("max_transitions", max_transitions)):
-        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
-            raise ParameterError(f"{name} must be an integer >= 1, got {v!r}")
+    o = dict(options)
+    o["rtol"] = check_real("rtol", o["rtol"], low=0.0, low_open=True)
+    o["atol"] = check_real("atol", o["atol"], low=0.0, low_open=True)
+    if o["max_step"] != math.inf:
+        o["max_step"] = check_real("max_step", o["max_step"], low=0.0, low_open=True)
+    o["slip_tol"] = check_real("slip_tol", o["slip_tol"], low=0.0)
+    o["alpha_min"] = check_real("alpha_min", o["alpha_min"], low=0.0, high=0.5 * math.pi,
+                                high_open=True)
+    o["max_wall_time"] = check_real("max_wall_time", o["max_wall_time"], low=0.0,
+                                    low_open=True)
+    for name, low in (("max_steps", 1), ("max_transitions", 1), ("max_points", 16)):
+        v = o[name]
+        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < low:
+            raise ParameterError(f"{name} must be an integer >= {low}, got {v!r}")
+    return y, (t0, t1), o
 
-    h = disk.h
-    run = _Run(disk, ground, alpha_min)
-    z = np.concatenate([y, np.zeros(4)])
-    transitions: list[Transition] = []
-    ts, zs, modes = [t0], [], []
 
-    # -- initial mode ----------------------------------------------------------------------
-    U = _inertial_slip(h, z)
-    speed = math.hypot(z[2], z[3])
-    if math.hypot(*U) <= slip_tol * (1.0 + speed):
-        z[2], z[3] = _cl._rolling_velocity(h, z)
-        F_t, F_z, _ = run.contact(ROLLING, z)
-        mode = ROLLING
-        if F_t > ground.mu_s * F_z:
-            mode = _start_sliding(run, disk, ground, z)
-            transitions.append(Transition(t0, "rolling", "sliding"))
-    else:
-        mode = SLIDING
+class _Points:
+    """The stored points of a run, at most about ``max_points`` of them: beyond, every other
+    regular step is dropped (pinned points, those of mode events, are always kept) and the
+    stride between stored regular steps doubles."""
+
+    def __init__(self, max_points):
+        self.max_points = max_points
+        self.t, self.z, self.mode, self.pinned = [], [], [], []
+        self.stride = 1
+        self._since = 0  # regular steps since the last stored one
+        self._pending = None  # the latest regular step not stored (kept for the end)
+
+    def add(self, t, z, mode, pinned=False):
+        if not pinned:
+            self._since += 1
+            if self._since < self.stride:
+                self._pending = (t, z.copy(), mode)
+                return
+            self._since = 0
+        self._pending = None
+        self.t.append(t)
+        self.z.append(z.copy())
+        self.mode.append(mode)
+        self.pinned.append(pinned)
+        if len(self.t) > self.max_points:
+            self._thin()
+
+    def _thin(self):
+        n = len(self.t)
+        keep = [i for i in range(n) if self.pinned[i] or i % 2 == 0 or i == n - 1]
+        for name in ("t", "z", "mode", "pinned"):
+            old = getattr(self, name)
+            setattr(self, name, [old[i] for i in keep])
+        self.stride *= 2
+
+    def finish(self):
+        """Store the last step if it was skipped (a run ends on its last state)."""
+        if self._pending is not None:
+            t, z, mode = self._pending
+            self._pending = None
+            self.t.append(t)
+            self.z.append(z)
+            self.mode.append(mode)
+            self.pinned.append(True)
+
+
+class _Hybrid:
+    """The state of one :func:`simulate_coulomb` run between its mode segments: the current
+    time, state and mode, the stored points, the transitions, the budgets spent, and how it
+    ended (``status``, ``message``)."""
+
+    def __init__(self, disk, ground, t0, t1, y, options, guards, progress):
+        self.disk, self.ground, self.h = disk, ground, disk.h
+        self.t0, self.t1 = t0, t1
+        self.o = options
+        self.guards, self.progress = guards, progress
+        self.run = _Run(disk, ground, options["alpha_min"])
+        self.transitions: list[Transition] = []
+        self.points = _Points(options["max_points"])
+        self.status, self.message, self.t_event = "completed", "", None
+        self.n_steps = 0
+        self.n_mode_events = 0
+        self.last_turn = None
+        self.next_report = 0.01
+        self.wall0 = time.perf_counter()
+        self.t = t0
+        self.z = np.concatenate([y, np.zeros(4)])
+        self.mode = self._initial_mode()
+        self.points.add(t0, self.z, self.mode, pinned=True)
+
+    def _initial_mode(self):
+        """Rolling if the slip is negligible and the friction rolling needs lies in the cone
+        (a ``rolling -> sliding`` transition at ``t0`` if not), else sliding."""
+        run, z, h = self.run, self.z, self.h
+        U = _inertial_slip(h, z)
+        speed = math.hypot(z[2], z[3])
+        if math.hypot(*U) <= self.o["slip_tol"] * (1.0 + speed):
+            z[2], z[3] = _cl._rolling_velocity(h, z)
+            F_t, F_z, _ = run.contact(ROLLING, z)
+            if F_t > self.ground.mu_s * F_z:
+                self.transitions.append(Transition(self.t0, "rolling", "sliding"))
+                return _start_sliding(run, self.disk, self.ground, z)
+            return ROLLING
         n = math.hypot(*U)
         run.ref = (U[0] / n, U[1] / n)
-    zs.append(z.copy())
-    modes.append(mode)
+        return SLIDING
 
-    status, message, t_event = "completed", "", None
-    n_steps = 0
-    n_mode_events = 0
-    last_turn = None
-    next_report = 0.01
-    wall0 = time.perf_counter()
-    t = t0
-    while True:  # one mode segment per pass
-        run.side = 1.0 if z[5] >= 0 else -1.0
-        solver = _DOP853()(run.rhs(mode), t, z, t1, rtol=rtol, atol=atol, max_step=max_step)
-        g_old = run.events(mode, z)
-        switched = False
+    def integrate(self):
+        """Run mode segment after mode segment until the end, a guard or a budget."""
+        while self._segment():
+            pass
+        self.points.finish()
+        if self.status == "completed":
+            self.message = f"reached t = {self.t:.12g}"
+        if self.points.stride > 1:
+            self.message += (f"; {len(self.points.t)} points stored: every "
+                             f"{self.points.stride}th step kept past max_points = "
+                             f"{self.o['max_points']} (and every mode event)")
+        if self.progress is not None:
+            self.progress(1.0)
+
+    def _segment(self):
+        """Integrate in the current mode until an event; True if the run goes on in a new
+        segment (a mode change or a new slip reference), False if it ended."""
+        run, o = self.run, self.o
+        run.side = 1.0 if self.z[5] >= 0 else -1.0
+        solver = _DOP853()(run.rhs(self.mode), self.t, self.z, self.t1, rtol=o["rtol"],
+                           atol=o["atol"], max_step=o["max_step"])
+        g_old = run.events(self.mode, self.z)
         while solver.status == "running":
-            if n_steps >= max_steps:
-                status = "failed"
-                message = (f"step budget exhausted: {max_steps} steps by t = {solver.t:.12g}; "
-                           "raise max_steps or shorten t_span")
-                break
-            try:
-                with np.errstate(all="ignore"):
-                    msg = solver.step()
-            except _Singular as exc:
-                status = "failed"
-                message = (f"the equations became singular at {exc} (a non-finite right-hand "
-                           f"side, theta = {solver.y[5]:.6g} at the step start)")
-                break
-            n_steps += 1
-            if solver.status == "failed":
-                status = "failed"
-                message = (f"the integrator gave up at t = {solver.t:.12g} ({msg}): step sizes "
-                           "collapsed")
-                break
-            if not np.all(np.isfinite(solver.y)):
-                status = "failed"
-                message = (f"the state left floating-point range at t = {solver.t:.12g} "
-                           "(the motion became singular)")
-                break
-            ta, tb = solver.t_old, solver.t
-            try:  # the interpolant evaluates the right-hand side too
-                with np.errstate(all="ignore"):
-                    sol = solver.dense_output()
-            except _Singular as exc:
-                status = "failed"
-                message = (f"the equations became singular at {exc} (a non-finite right-hand "
-                           f"side, theta = {solver.y[5]:.6g} at the step end)")
-                break
-            hit = _first_event(run, mode, sol, ta, tb, g_old, h > 0 and guards, guards)
-            if hit is None:
-                t, z = tb, solver.y.copy()
-                ts.append(t)
-                zs.append(z.copy())
-                modes.append(mode)
-                g_old = run.events(mode, z)
-                if mode == SLIDING:
-                    U = _inertial_slip(h, z)
-                    n = math.hypot(*U)
-                    if n > U_EPS:
-                        run.ref = (U[0] / n, U[1] / n)
-                        g_old = run.events(mode, z)
-                if progress is not None and (t - t0) / (t1 - t0) >= next_report:
-                    progress(min(1.0, (t - t0) / (t1 - t0)))
-                    next_report = (t - t0) / (t1 - t0) + 0.01
-                continue
-            k, te = hit
-            t, z = te, np.asarray(sol(te), dtype=float).copy()
-            ts.append(t)
-            zs.append(z.copy())
-            modes.append(mode)
-            if k > 0:  # terminal guard
-                status = ("lift-off", "edge-contact", "fell-flat")[k - 1]
-                t_event = t
-                message = _message(status, t, h)
-                break
-            n_mode_events += 1
-            if n_mode_events > max_transitions:
-                status = "failed"
-                message = (f"transition budget exhausted: {max_transitions} mode events by "
-                           f"t = {t:.12g} (sticking and slipping chatter?)")
-                break
-            if mode == SLIDING:
-                U = _inertial_slip(h, z)
-                n = math.hypot(*U)
-                if n > STICK_TOL * (1.0 + math.hypot(z[2], z[3])):
-                    if last_turn is not None and t - last_turn <= 1e-12 * (1.0 + abs(t)):
-                        status = "failed"
-                        message = (f"stuck at t = {t:.12g}: the slip direction turned twice at "
-                                   "the same time (a discontinuity of the equations)")
-                        break
-                    last_turn = t
-                    # u turned across the reference direction without vanishing: a new
-                    # reference, no transition
-                    run.ref = (U[0] / n, U[1] / n)
-                    switched = True
-                    break
-            if mode == ROLLING:
-                new = _start_sliding(run, disk, ground, z)
-            else:
-                z[2], z[3] = _cl._rolling_velocity(h, z)  # u = 0 up to the event tolerance
-                F_t, F_z, _ = run.contact(ROLLING, z)
-                new = ROLLING if F_t <= ground.mu_s * F_z else _start_sliding(run, disk,
-                                                                               ground, z)
-            if new != mode:
-                transitions.append(Transition(t, _NAMES[mode], _NAMES[new]))
-            mode = new
-            switched = True
-            break
-        if not switched:
-            break
-    wall = time.perf_counter() - wall0
-    if status == "completed":
-        message = f"reached t = {t:.12g}"
-    Z = np.array(zs).T
-    if progress is not None:
-        progress(1.0)
-    return CoulombTrajectory(disk=disk, ground=ground, t=np.array(ts), y=Z[:10], status=status,
-                      message=message, n_steps=n_steps, n_rhs=run.n_rhs, method="dop853-scipy",
-                      t_event=t_event, wall_time=wall, mode=np.array(modes),
-                      transitions=tuple(transitions),
-                      dissipated={k: Z[10 + i].copy() for i, k in enumerate(DISSIPATION_TERMS)})
+            if self._out_of_budget(solver.t) or not self._step(solver):
+                return False
+            sol = self._dense(solver)
+            if sol is None:
+                return False
+            hit = _first_event(run, self.mode, sol, solver.t_old, solver.t, g_old,
+                               self.h > 0 and self.guards, self.guards)
+            if hit is not None:
+                return self._on_event(sol, *hit)
+            g_old = self._accept(solver)
+        return False
+
+    def _out_of_budget(self, t):
+        """Stop (status and message set) if the step or wall-clock budget is spent."""
+        max_steps, max_wall = self.o["max_steps"], self.o["max_wall_time"]
+        if self.n_steps >= max_steps:
+            self.status = "step-budget"
+            self.message = (f"step budget exhausted: {max_steps} steps by t = {t:.12g}; "
+                            "raise max_steps or shorten t_span")
+            return True
+        spent = time.perf_counter() - self.wall0
+        if spent > max_wall:
+            self.status = "time-budget"
+            self.message = (f"wall-clock budget exhausted: max_wall_time = {max_wall:g} s "
+                            f"spent by t = {t:.12g} after {self.n_steps} steps "
+                            f"({1e3 * spent / max(self.n_steps, 1):.3g} ms a step); raise "
+                            "max_wall_time, shorten t_span or loosen rtol")
+            return True
+        return False
+
+    def _step(self, solver):
+        """One DOP853 step; False (status and message set) if it failed."""
+        try:
+            with np.errstate(all="ignore"):
+                msg = solver.step()
+        except _Singular as exc:
+            self.status = "failed"
+            self.message = (f"the equations became singular at {exc} (a non-finite right-hand "
+                            f"side, theta = {solver.y[5]:.6g} at the step start)")
+            return False
+        self.n_steps += 1
+        if solver.status == "failed":
+            self.status = "failed"
+            self.message = (f"the integrator gave up at t = {solver.t:.12g} ({msg}): step "
+                            "sizes collapsed")
+            return False
+        if not np.all(np.isfinite(solver.y)):
+            self.status = "failed"
+            self.message = (f"the state left floating-point range at t = {solver.t:.12g} "
+                            "(the motion became singular)")
+            return False
+        return True
+
+    def _dense(self, solver):
+        """The step's interpolant (it evaluates the right-hand side too); None (status and
+        message set) if the equations became singular there."""
+        try:
+            with np.errstate(all="ignore"):
+                return solver.dense_output()
+        except _Singular as exc:
+            self.status = "failed"
+            self.message = (f"the equations became singular at {exc} (a non-finite right-hand "
+                            f"side, theta = {solver.y[5]:.6g} at the step end)")
+            return None
+
+    def _accept(self, solver):
+        """Store a step without events; the event values at its end."""
+        run, mode = self.run, self.mode
+        self.t, self.z = solver.t, solver.y.copy()
+        self.points.add(self.t, self.z, mode)
+        g_old = run.events(mode, self.z)
+        if mode == SLIDING:
+            U = _inertial_slip(self.h, self.z)
+            n = math.hypot(*U)
+            if n > U_EPS:
+                run.ref = (U[0] / n, U[1] / n)
+                g_old = run.events(mode, self.z)
+        done = (self.t - self.t0) / (self.t1 - self.t0)
+        if self.progress is not None and done >= self.next_report:
+            self.progress(min(1.0, done))
+            self.next_report = done + 0.01
+        return g_old
+
+    def _on_event(self, sol, k, te):
+        """Handle event ``k`` at ``te``: a terminal guard ends the run; the end of a mode
+        switches mode or slip reference.  True if the run goes on."""
+        self.t, self.z = te, np.asarray(sol(te), dtype=float).copy()
+        self.points.add(self.t, self.z, self.mode, pinned=True)
+        t = self.t
+        if k > 0:  # terminal guard
+            self.status = ("lift-off", "edge-contact", "fell-flat")[k - 1]
+            self.t_event = t
+            self.message = _message(self.status, t, self.h)
+            return False
+        self.n_mode_events += 1
+        if self.n_mode_events > self.o["max_transitions"]:
+            self.status = "failed"
+            self.message = (f"transition budget exhausted: {self.o['max_transitions']} mode "
+                            f"events by t = {t:.12g} (sticking and slipping chatter?)")
+            return False
+        if self.mode == SLIDING:
+            turned = self._slip_turned()
+            if turned is not None:
+                return turned
+        self._switch_mode()
+        return True
+
+    def _slip_turned(self):
+        """At a zero of ``u . u_ref`` with the slip not at rest: a new slip reference
+        (True), or stuck (False, status set); None if the slip came to rest."""
+        z, t = self.z, self.t
+        U = _inertial_slip(self.h, z)
+        n = math.hypot(*U)
+        if n <= STICK_TOL * (1.0 + math.hypot(z[2], z[3])):
+            return None
+        if self.last_turn is not None and t - self.last_turn <= 1e-12 * (1.0 + abs(t)):
+            self.status = "failed"
+            self.message = (f"stuck at t = {t:.12g}: the slip direction turned twice at "
+                            "the same time (a discontinuity of the equations)")
+            return False
+        self.last_turn = t
+        # u turned across the reference direction without vanishing: a new reference, no
+        # transition
+        self.run.ref = (U[0] / n, U[1] / n)
+        return True
+
+    def _switch_mode(self):
+        """The mode after the end of the current one (recorded as a transition if it
+        differs): rolling starts to slide; sliding rolls if the cone allows, else slides on."""
+        run, z, disk, ground = self.run, self.z, self.disk, self.ground
+        if self.mode == ROLLING:
+            new = _start_sliding(run, disk, ground, z)
+        else:
+            z[2], z[3] = _cl._rolling_velocity(self.h, z)  # u = 0 up to the event tolerance
+            F_t, F_z, _ = run.contact(ROLLING, z)
+            new = ROLLING if F_t <= ground.mu_s * F_z else _start_sliding(run, disk, ground, z)
+        if new != self.mode:
+            self.transitions.append(Transition(self.t, _NAMES[self.mode], _NAMES[new]))
+        self.mode = new
+
+    def trajectory(self):
+        """The run as a :class:`CoulombTrajectory`."""
+        wall = time.perf_counter() - self.wall0
+        Z = np.array(self.points.z).T
+        return CoulombTrajectory(
+            disk=self.disk, ground=self.ground, t=np.array(self.points.t), y=Z[:10],
+            status=self.status, message=self.message, n_steps=self.n_steps,
+            n_rhs=self.run.n_rhs, method="dop853-scipy", t_event=self.t_event,
+            wall_time=wall, mode=np.array(self.points.mode),
+            transitions=tuple(self.transitions),
+            dissipated={k: Z[10 + i].copy() for i, k in enumerate(DISSIPATION_TERMS)})
 
 
 def _start_sliding(run, disk, ground, z):

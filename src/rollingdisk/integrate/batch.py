@@ -192,6 +192,15 @@ def _summaries(out, status, t, max_d, cr, t_lo, t_hi, e_drift, n_steps):
     out[8] = n_steps
 
 
+# Why one long function (issue 17: compiled kernels are exempt from the ~80-line rule): one
+# trajectory of a sweep, compiled by numba (nopython, called from a prange loop over
+# millions of points).  Nopython allows no closures and no objects carrying the running
+# summaries, so the step loop and the summaries it updates at every step (the largest
+# departure, the theta crossings for the frequency, the growth window, the energy drift)
+# stay local scalars of one frame: split into functions they would be passed in and
+# returned as tuples at every step of every point.  The step itself (_step4), the crossing
+# interpolation (_hermite_root, _add_crossing) and the final record (_summaries) are
+# already separate.
 @numba.njit(cache=True)
 def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
          max_steps, out):
@@ -325,6 +334,13 @@ def run_batch(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol
 _SAMPLES = 2
 
 
+# Why one long function (issue 17: compiled kernels are exempt from the ~80-line rule): the
+# Taylor twin of _one, compiled by numba (nopython, inside a prange loop).  The running
+# summaries are taken on each step's polynomial at a few sample points, and with no
+# closures or objects in nopython they stay local scalars of the one frame that owns the
+# jet arrays (J, A) and the step loop; splitting would pass and return them as tuples at
+# every step.  The jet, the step size and the polynomial evaluation are the taylor module's
+# small _tay_* helpers.
 @numba.njit(cache=True)
 def _one_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atolv,
                 max_steps, P, out):

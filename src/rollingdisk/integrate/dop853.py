@@ -407,6 +407,17 @@ def _grow(ts, ys, m):
     return ts2, ys2, cap
 
 
+# Why one long function (issue 17: compiled kernels are exempt from the ~80-line rule): this
+# is the hot loop of every compiled run, compiled by numba in nopython mode
+# (rollingdisk.integrate.numba_core).  There it can use no closures, no objects holding the
+# solver's state and no exceptions for control flow, so the step loop - step, error norm,
+# accept or reject, guards sampled and located on the dense output, t_eval output, budgets
+# and the chunk pause - keeps its work arrays (K, y, y_new, F, the guard vectors) as locals
+# of one frame, allocated once per call; the per-step pieces are already small helpers
+# above (_step, _error_norm_v, _dense_coefficients, _locate_on_dense, ...).  Moving the
+# remaining control flow (break on a guard or a budget, continue on a rejected step) into
+# functions would need flag tuples returned through every call and would put status
+# bookkeeping into the per-step path.
 def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atolv, max_step, first_step, use_guards,
               side, t_eval, has_t_eval, max_steps, chunk_steps, keep_dense):
     """Integrate from (t0, y0) to t_end, stopping at the first guard event.

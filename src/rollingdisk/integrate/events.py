@@ -42,16 +42,20 @@ from rollingdisk.model.outcomes import (  # noqa: F401 - the codes, for the kern
     LIFT_OFF,
     RUNNING,
     STEP_BUDGET,
+    TIME_BUDGET,
     names,
     outcome,
 )
-from rollingdisk.model.state import _reduced_state, state_index
+from rollingdisk.model.state import _reduced_state, state_index, state_names
+from rollingdisk.util.checks import real_array
+from rollingdisk.util.errors import ParameterError
 
 __all__ = ["GuardEvent", "LiftOff", "EdgeContact", "FellFlat", "GUARDS", "STATUSES",
            "guard_events"]
 
 #: Possible values of :attr:`rollingdisk.Trajectory.status` (see :mod:`rollingdisk.model.outcomes`).
-STATUSES = names(COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED, STEP_BUDGET)
+STATUSES = names(COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED, STEP_BUDGET,
+                 TIME_BUDGET)
 STATUS_OF_CODE = {outcome(s).code: s for s in STATUSES}
 
 
@@ -181,7 +185,12 @@ def guard_events(disk: Disk, ground: str, y0) -> list[GuardEvent]:
         ``[LiftOff, EdgeContact, FellFlat]`` instances, ``EdgeContact`` only for ``h > 0``.
     """
     ground = check_ground(ground)
-    theta = float(_reduced_state(ground == "rough", np.asarray(y0, dtype=float))[0])
+    y = real_array("y0", y0)
+    n = len(state_names(ground))
+    if y.shape[:1] not in ((n,), (4,)):
+        raise ParameterError(f"y0 must have {n} components on {ground} ground (or the 4 of "
+                             f"theta, omega1, omega2, omega3), got shape {y.shape}")
+    theta = float(_reduced_state(ground == "rough", y)[0])
     side = 1.0 if theta >= 0 else -1.0
     return [g(disk, ground, side) for g in GUARDS if g.applies(disk)]
 

@@ -16,6 +16,7 @@ import numpy as np
 
 from rollingdisk.integrate.trajectory import Trajectory
 from rollingdisk.model.equations import omega_dot
+from rollingdisk.util.checks import check_real, real_array
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["energy_drift", "oscillation_frequency", "growth_rate", "fit_circle",
@@ -154,6 +155,9 @@ def growth_rate(traj: Trajectory, *, theta_ref: float | None = None,
     from scipy.optimize import minimize_scalar
 
     _check_trajectory(traj)
+    max_amplitude = check_real("max_amplitude", max_amplitude, low=0.0, low_open=True)
+    if theta_ref is not None:
+        theta_ref = check_real("theta_ref", theta_ref)
     ref = theta_ref if theta_ref is not None else (
         traj.theta_ref if traj.theta_ref is not None else float(traj.theta[0]))
     dev = np.abs(traj.theta - ref)
@@ -209,8 +213,8 @@ def fit_circle(x, y) -> tuple[float, float, float]:
     ValueError
         If ``x`` and ``y`` differ in length or hold fewer than 3 points.
     """
-    x = np.asarray(x, dtype=float).ravel()
-    y = np.asarray(y, dtype=float).ravel()
+    x = real_array("x", x).ravel()
+    y = real_array("y", y).ravel()
     if x.shape != y.shape or x.size < 3:
         raise ParameterError("x and y must be equally long with at least 3 points")
     mx, my = x.mean(), y.mean()

@@ -213,6 +213,15 @@ def _tay_jet4_smooth(h, y, J, A, P):
     _tay_rows_smooth(h, J[0], J[1], J[2], J[3], A, P)
 
 
+# Why one long function (issue 17: compiled kernels are exempt from the ~80-line rule): the
+# Taylor coefficients of all eight rough-ground states, order by order, compiled by numba
+# (numba_core).  It is the innermost loop of the Taylor method (O(P^2) per step); the
+# recurrences of the reduced rows and of the quadratures are fused into one pass over the
+# orders so that each convolution is computed once and shared, in scratch rows of A that
+# live in this frame.  Split per state, each piece would recompute or pass those partial
+# series, and nopython offers no closure or object to share them cheaply (a two-pass
+# version took 1.22-1.25x as long, see the docstring); tests/test_simulate_taylor.py holds
+# the jet to the model's kernels.
 def _tay_jet_rough(h, y, J, A, P):
     """:func:`_tay_jet` on rough ground (eqs. 1, 2, 37, 38), the convolutions fused.
 
@@ -512,6 +521,13 @@ def _tay_locate(rough, h, J, P, side, kg, xa, xb, ga, gb, ytmp, g):
     return xa
 
 
+# Why one long function (issue 17: compiled kernels are exempt from the ~80-line rule): the
+# step loop of simulate(method="taylor"), compiled by numba in nopython mode (numba_core):
+# no closures, no solver object, no exceptions for control flow.  The loop's state (the
+# jet J, the scratch A, output buffers, guard values, counters) lives in this one frame,
+# allocated once; the jet, step size, evaluation and guard location are the small _tay_*
+# helpers, and what remains is control flow (break on a guard, a budget or the chunk pause)
+# that would otherwise be returned through flags at every step.
 def _tay_integrate(rough, h, t0, y0, t_end, rtol, atolv, max_step, use_guards, side, t_eval,
                    has_t_eval, max_steps, chunk_steps, P):
     """Integrate from (t0, y0) towards t_end with the Taylor method of order P.

@@ -59,8 +59,9 @@ class Trajectory:
         ``"completed"`` (reached the end of ``t_span``, or stopped by a terminal user
         event), ``"lift-off"`` (``F_z`` reached 0, eq. 11), ``"edge-contact"`` (``theta``
         reached 0 with ``h > 0``), ``"fell-flat"`` (``|theta|`` reached ``pi/2``),
-        ``"step-budget"`` (``max_steps`` steps taken before the end) or ``"failed"`` (the
-        integrator gave up; see ``message``).  See :mod:`rollingdisk.integrate.events`.
+        ``"step-budget"`` (``max_steps`` steps taken before the end), ``"time-budget"``
+        (Coulomb ground: ``max_wall_time`` seconds spent before the end) or ``"failed"``
+        (the integrator gave up; see ``message``).  See :mod:`rollingdisk.integrate.events`.
     message : str
         What happened, in words.
     n_steps, n_rhs : int
@@ -129,9 +130,9 @@ class Trajectory:
 
     @property
     def success(self) -> bool:
-        """True unless the integrator failed or ran out of steps (guard events count as
-        success)."""
-        return self.status not in ("failed", "step-budget")
+        """True unless the integrator failed or ran out of steps or time (guard events count
+        as success)."""
+        return self.status not in ("failed", "step-budget", "time-budget")
 
     def component(self, name: str) -> np.ndarray:
         """The state component ``name`` (e.g. ``"theta"``) along the trajectory."""

@@ -38,6 +38,7 @@ import numpy as np
 from rollingdisk.model.disk import Disk, check_ground
 from rollingdisk.model.geometry import _geometry, _inertia
 from rollingdisk.model.state import _as_state, _reduced_state, _shape_error, state_names
+from rollingdisk.util.checks import real_array
 from rollingdisk.util.errors import ParameterTypeError
 
 __all__ = ["equations_of_motion", "omega_dot", "contact_force", "energy", "contact_point",
@@ -218,6 +219,9 @@ def omega_dot(disk: Disk, ground: str, theta, omega1, omega2, omega3):
     inclination and the angular velocity; positions and ``psi, phi`` do not enter.
     """
     kernel = _rough_omega_dot if check_ground(ground) == "rough" else _smooth_omega_dot
+    for name, value in (("theta", theta), ("omega1", omega1), ("omega2", omega2),
+                        ("omega3", omega3)):
+        real_array(name, value)  # named errors for non-numbers and ints beyond float range
     return kernel(_check_disk(disk).h, theta, omega1, omega2, omega3)
 
 

@@ -39,7 +39,7 @@ class Outcome:
 
 # integer codes, shared with the compiled integrators (numba reads them as globals)
 RUNNING, COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED, STEP_BUDGET = range(7)
-BOUNDED, STEADY, AT_REST, NO_STEADY_MOTION, NOT_CONVERGED = 7, 8, 9, 10, 11
+BOUNDED, STEADY, AT_REST, NO_STEADY_MOTION, NOT_CONVERGED, TIME_BUDGET = 7, 8, 9, 10, 11, 12
 
 #: Every outcome, by code.  ``running`` is the kernels' "not ended yet" and never a result.
 OUTCOMES = (
@@ -63,6 +63,8 @@ OUTCOMES = (
     Outcome(NOT_CONVERGED, "not-converged", "exact motion: the quadrature did not reach its "
             "rounding floor within its work budget (theta-ODE steps, Fourier terms or "
             "wall-clock time); the message says which"),
+    Outcome(TIME_BUDGET, "time-budget", "the wall-clock budget (max_wall_time) was spent "
+            "before the end"),
 )
 _BY_NAME = {o.name: o for o in OUTCOMES}
 _BY_CODE = {o.code: o for o in OUTCOMES}

@@ -5,7 +5,8 @@ from __future__ import annotations
 import numpy as np
 
 from rollingdisk.model.disk import check_ground
-from rollingdisk.util.errors import ParameterError, ParameterTypeError
+from rollingdisk.util.checks import real_array
+from rollingdisk.util.errors import ParameterError
 
 __all__ = ["ROUGH_STATE", "SMOOTH_STATE", "state_names", "state_index"]
 
@@ -42,20 +43,22 @@ def _reduced_state(rough, y):
     return y[5], y[7], y[8], y[9]
 
 
-def _shape_error(ground: str, y) -> ParameterError:
+def _shape_error(ground: str, y, name: str = "y") -> ParameterError:
     names = state_names(ground)
-    return ParameterError(f"y must have {len(names)} components on {ground} ground "
+    return ParameterError(f"{name} must have {len(names)} components on {ground} ground "
                           f"({', '.join(names)}), got {np.shape(y)}")
 
 
-def _as_state(ground: str, y) -> np.ndarray:
-    """``y`` as a float array of states: right length, finite (never a silent NaN)."""
-    try:
-        y = np.asarray(y, dtype=float)
-    except (TypeError, ValueError):
-        raise ParameterTypeError(f"y must be an array of real numbers, got {y!r}") from None
+def _as_state(ground: str, y, name: str = "y") -> np.ndarray:
+    """``y`` as a float array of states: right length, finite (never a silent NaN).
+
+    A non-number raises :class:`~rollingdisk.util.errors.ParameterTypeError`; a wrong
+    shape, NaN, an infinity or an integer beyond floating-point range (``10**400``)
+    :class:`~rollingdisk.util.errors.ParameterError`, each naming ``name``.
+    """
+    y = real_array(name, y)
     if y.shape[:1] != (len(state_names(ground)),):
-        raise _shape_error(ground, y)
+        raise _shape_error(ground, y, name)
     if not np.all(np.isfinite(y)):
-        raise ParameterError("y must be finite (no NaN or infinity)")
+        raise ParameterError(f"{name} must be finite (no NaN or infinity)")
     return y

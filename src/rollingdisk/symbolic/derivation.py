@@ -90,7 +90,26 @@ class Derivation:
 @lru_cache(maxsize=1)
 def derive() -> Derivation:
     """Derive the equations of motion (about two seconds; cached)."""
-    # -- kinematics: frames and angular velocities from rotation matrices (eqs. 2-3) ----
+    ang, frame_rates, wf, w = _kinematics()
+    k1, k2 = _inertia_moments()
+    I = sp.diag(k1, k2, k1)
+    y_P, z_P, rP, rP_xyz, contact_inertial = _contact_point()
+    b = _balances(frame_rates, wf, w, I, rP, rP_xyz, z_P)
+    rough = _rough_ground(b)
+    smooth = _smooth_ground(b)
+    return Derivation(
+        angular_velocity=ang, frame_rates=frame_rates, inertia=(k1, k2),
+        contact_point=(y_P, z_P), contact_point_inertial=contact_inertial,
+        contact_velocity=tuple(b.vP), centre_height=(b.Z_C, b.v_Cz_contact),
+        newton=b.newton, euler=b.euler, normal_force=b.normal_force,
+        energy_rate=b.energy_rate, energy=b.E, **rough, **smooth,
+    )
+
+
+def _kinematics():
+    """Frames and angular velocities from rotation matrices (eqs. 2-3): the body's angular
+    velocity in C xi eta zeta, the frame rates ``(dpsi/dt, dtheta/dt, dphi/dt)`` and the
+    frame's angular velocity in terms of ``omega1..3``, and ``omega`` as a column."""
     ph = sp.Symbol("phi", real=True)
     psidot, thetadot, phidot = sp.symbols("psidot thetadot phidot", real=True)
 
@@ -114,17 +133,22 @@ def derive() -> Derivation:
     # frame angular velocity in xi eta zeta, expressed with omega1..3
     wf = sp.Matrix([sp.simplify(c.subs(frame_rates_sol)) for c in w_frame])
     w = sp.Matrix([omega1, omega2, omega3])
+    return ang, frame_rates, wf, w
 
-    # -- inertia of the homogeneous cylinder radius 1, |eta| <= hh (eq. 10) --------------
+
+def _inertia_moments():
+    """``(k1, k2)`` of the homogeneous cylinder of radius 1, ``|eta| <= h`` (eq. 10)."""
     r, al, e, hh = sp.symbols("r alpha eta_ hh", positive=True)
     vol = sp.integrate(r, (r, 0, 1), (al, 0, 2 * sp.pi), (e, -hh, hh))
     k1 = sp.simplify(sp.integrate((e**2 + (r * sp.sin(al))**2) * r,
                                   (r, 0, 1), (al, 0, 2 * sp.pi), (e, -hh, hh)) / vol)
     k2 = sp.simplify(sp.integrate(r**2 * r, (r, 0, 1), (al, 0, 2 * sp.pi), (e, -hh, hh)) / vol)
-    k1, k2 = k1.subs(hh, ht), k2.subs(hh, ht)  # depend on h^2 = ht^2 only
-    I = sp.diag(k1, k2, k1)
+    return k1.subs(hh, ht), k2.subs(hh, ht)  # depend on h^2 = ht^2 only
 
-    # -- contact point: the lowest point of the two rim circles (eq. 4) ----------------
+
+def _contact_point():
+    """The contact point, the lowest point of the two rim circles (eq. 4): ``y_P, z_P``
+    (Cxyz), ``r_CP`` in C xi eta zeta and in Cxyz, and its inertial ``(X, Y)`` offset."""
     # rim points: C + cos(a) xi + sin(a) zeta + s h eta, s = +-1; height above C:
     a_, s_ = sp.symbols("a_ s_", real=True)
     rim = sp.Matrix([sp.cos(a_), s_ * h, sp.sin(a_)])  # in xi eta zeta
@@ -142,6 +166,14 @@ def derive() -> Derivation:
     _require(sp.simplify(rP_xyz[0]) == 0, "the contact point lies in the plane x = 0")
     P_inertial = _Rz(psi) * rP_xyz
     contact_inertial = (sp.simplify(P_inertial[0]), sp.simplify(P_inertial[1]))
+    return y_P, z_P, rP, rP_xyz, contact_inertial
+
+
+def _balances(frame_rates, wf, w, I, rP, rP_xyz, z_P):
+    """The ground-independent equations: contact velocity and constraint (eqs. 6-7),
+    momentum and angular-momentum balances (eqs. 8-9), normal force (eq. 11), energy and
+    its rate (eqs. 12-13), as a namespace."""
+    from types import SimpleNamespace
 
     # -- velocity of the contact point (eq. 6) and the contact constraint (eq. 7) -------
     w_xyz = _Rx(theta) * w
@@ -180,10 +212,21 @@ def derive() -> Derivation:
           + E.diff(theta) * omega1)
     power = vP[0] * F_x + vP[1] * F_y + w_xyz.dot(sp.Matrix([M_x, M_y, M_z]))
     energy_rate = sp.simplify((dE - power).subs(v_Cz, v_Cz_contact))
+    return SimpleNamespace(vP=vP, Z_C=Z_C, v_Cz_contact=v_Cz_contact, dvC=dvC, newton=newton,
+                           euler=euler, normal_force=normal_force, E=E,
+                           energy_rate=energy_rate)
 
-    # -- rough ground: v_P = 0 ------------------------------------------------------------
+
+#: The contact moments vanish on the ideal grounds.
+_NO_MOMENTS = {M_x: 0, M_y: 0, M_z: 0}
+
+
+def _rough_ground(b) -> dict:
+    """Rough ground, ``v_P = 0``: the velocity of C, ``d omega/dt``, the contact force and
+    the energy (the ``rough_*`` fields of :class:`Derivation`)."""
+    vP, dvC, newton, euler = b.vP, b.dvC, b.newton, b.euler
     vC_rough = sp.solve(list(vP[:2]), [v_Cx, v_Cy], dict=True)[0]
-    rough_v = {v_Cx: vC_rough[v_Cx], v_Cy: vC_rough[v_Cy], v_Cz: v_Cz_contact}
+    rough_v = {v_Cx: vC_rough[v_Cx], v_Cy: vC_rough[v_Cy], v_Cz: b.v_Cz_contact}
     # accelerations of C in Cxyz: d/dt of the constrained velocity components
     state_rates = {theta: omega1, omega1: dw1, omega2: dw2, omega3: dw3}
 
@@ -194,29 +237,26 @@ def derive() -> Derivation:
                 dvC[2]: ddt(rough_v[v_Cz])}
     F_rough = sp.solve([eq.subs(dv_rough).subs(rough_v) for eq in newton], [F_x, F_y, F_z],
                        dict=True)[0]
-    free = {M_x: 0, M_y: 0, M_z: 0}
-    eqs_rough = [eq.subs(free).subs(F_rough) for eq in euler]
+    eqs_rough = [eq.subs(_NO_MOMENTS).subs(F_rough) for eq in euler]
     sol_rough = sp.solve(eqs_rough, [dw1, dw2, dw3], dict=True)[0]
-    rough_omega_dot = tuple(sp.factor(sp.simplify(sol_rough[d])) for d in (dw1, dw2, dw3))
-    rough_force = tuple(sp.together(F_rough[f].subs(sol_rough)) for f in (F_x, F_y, F_z))
-    rough_energy = sp.simplify(E.subs(rough_v))
+    return dict(
+        rough_velocity_of_C=(vC_rough[v_Cx], vC_rough[v_Cy]),
+        rough_omega_dot=tuple(sp.factor(sp.simplify(sol_rough[d])) for d in (dw1, dw2, dw3)),
+        rough_force=tuple(sp.together(F_rough[f].subs(sol_rough)) for f in (F_x, F_y, F_z)),
+        rough_energy=sp.simplify(b.E.subs(rough_v)))
 
-    # -- smooth ground: F_x = F_y = 0, F_z from (11) ---------------------------------------
-    eqs_smooth = [eq.subs(free).subs({F_x: 0, F_y: 0, F_z: normal_force}) for eq in euler]
+
+def _smooth_ground(b) -> dict:
+    """Smooth ground, ``F_x = F_y = 0`` and ``F_z`` from eq. (11): ``d omega/dt``, the
+    contact force and the internal energy (the ``smooth_*`` fields of :class:`Derivation`)."""
+    eqs_smooth = [eq.subs(_NO_MOMENTS).subs({F_x: 0, F_y: 0, F_z: b.normal_force})
+                  for eq in b.euler]
     sol_smooth = sp.solve(eqs_smooth, [dw1, dw2, dw3], dict=True)[0]
-    smooth_omega_dot = tuple(sp.simplify(sol_smooth[d]) for d in (dw1, dw2, dw3))
-    smooth_force = (sp.Integer(0), sp.Integer(0), sp.simplify(normal_force.subs(sol_smooth)))
-    smooth_energy_internal = sp.simplify(E.subs({v_Cx: 0, v_Cy: 0, v_Cz: v_Cz_contact}))
-
-    return Derivation(
-        angular_velocity=ang, frame_rates=frame_rates, inertia=(k1, k2),
-        contact_point=(y_P, z_P), contact_point_inertial=contact_inertial,
-        contact_velocity=tuple(vP), centre_height=(Z_C, v_Cz_contact), newton=newton,
-        euler=euler, normal_force=normal_force, energy_rate=energy_rate, energy=E,
-        rough_velocity_of_C=(vC_rough[v_Cx], vC_rough[v_Cy]), rough_omega_dot=rough_omega_dot,
-        rough_force=rough_force, rough_energy=rough_energy, smooth_omega_dot=smooth_omega_dot,
-        smooth_force=smooth_force, smooth_energy_internal=smooth_energy_internal,
-    )
+    return dict(
+        smooth_omega_dot=tuple(sp.simplify(sol_smooth[d]) for d in (dw1, dw2, dw3)),
+        smooth_force=(sp.Integer(0), sp.Integer(0),
+                      sp.simplify(b.normal_force.subs(sol_smooth))),
+        smooth_energy_internal=sp.simplify(b.E.subs({v_Cx: 0, v_Cy: 0, v_Cz: b.v_Cz_contact})))
 
 
 @lru_cache(maxsize=1)

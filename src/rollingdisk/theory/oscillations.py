@@ -28,7 +28,7 @@ from rollingdisk.model.disk import Disk, check_ground, check_h, h_of
 from rollingdisk.model.equations import _reduced_rhs
 from rollingdisk.model.geometry import h_tilde
 from rollingdisk.theory.steady import Omega0_sq, SteadyMotion, _map_domain
-from rollingdisk.util.checks import check_real
+from rollingdisk.util.checks import check_real, real_array
 from rollingdisk.util.errors import ParameterError
 
 __all__ = [
@@ -158,7 +158,8 @@ def varpi2_closed_form(h, ground: str, theta0, omega20, omega30):
     theta0``, with ``theta0 = 0`` taken as ``0+`` (only meaningful for ``h = 0``).
     """
     ground = check_ground(ground)
-    h, t, w2, w3 = (np.asarray(a, dtype=float) for a in (h_of(h), theta0, omega20, omega30))
+    h, t, w2, w3 = (real_array(n, a) for n, a in (("h", h_of(h)), ("theta0", theta0),
+                                                  ("omega20", omega20), ("omega30", omega30)))
     ht = h_tilde(h, t)
     p = np.tan(t)
     h2 = h * h
@@ -320,7 +321,7 @@ def circle_coefficients(h, ground: str, theta0):
     ``den > 0`` everywhere.  Element-wise; ``theta0 = 0`` is the limit ``0+``.
     """
     ground = check_ground(ground)
-    h, t = np.broadcast_arrays(np.asarray(h_of(h), dtype=float), np.asarray(theta0, dtype=float))
+    h, t = np.broadcast_arrays(real_array("h", h_of(h)), real_array("theta0", theta0))
     ht = h_tilde(h, t)
     p = np.tan(t)
     h2 = h * h
@@ -350,8 +351,8 @@ def varpi2_circle(h, ground: str, theta0, omega30):
     Arrays in (broadcast), array out; NaN where ``omega30 = 0`` or outside
     ``h >= 0, |theta0| < pi/2``.  Any ``omega30 != 0`` is a steady circle (section 3.2).
     """
-    h, t, w = np.broadcast_arrays(*(np.asarray(a, dtype=float)
-                                    for a in (h_of(h), theta0, omega30)))
+    h, t, w = np.broadcast_arrays(*(real_array(n, a) for n, a in
+                                    (("h", h_of(h)), ("theta0", theta0), ("omega30", omega30))))
     with np.errstate(all="ignore"):
         P0, P1, P2, den = circle_coefficients(h, ground, t)
         w2 = w * w
@@ -423,8 +424,7 @@ def stable_for_all_omega30(h, ground: str, theta0):
     is eq. (59): ``3p^4 - 4h~p^3 + 6p^2 - 12h~p - 1 + 4h^2 > 0``.  Boolean array (False
     outside the domain).
     """
-    h_a, t_a = np.broadcast_arrays(np.asarray(h_of(h), dtype=float),
-                                   np.asarray(theta0, dtype=float))
+    h_a, t_a = np.broadcast_arrays(real_array("h", h_of(h)), real_array("theta0", theta0))
     lower, upper = critical_omega30_sq(h_a, ground, t_a)  # no positive root: stable for all
     return (np.isnan(upper) & _map_domain(h_a, t_a))[()]
 

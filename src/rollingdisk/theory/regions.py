@@ -22,7 +22,8 @@ import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground, check_h, h_of
 from rollingdisk.theory.steady import SteadyMotion
-from rollingdisk.util.errors import ParameterError, ParameterTypeError
+from rollingdisk.util.checks import real_array
+from rollingdisk.util.errors import ParameterError
 
 __all__ = ["NO_MOTION", "UNSTABLE", "STABLE", "existence_codes", "varpi2_zero_surface",
            "ExampleMotions", "example_motions"]
@@ -30,17 +31,6 @@ __all__ = ["NO_MOTION", "UNSTABLE", "STABLE", "existence_codes", "varpi2_zero_su
 #: Class codes of :func:`existence_codes`: no steady motion (``Omega0^2 <= 0``), a steady
 #: motion with ``varpi^2 < 0`` (unstable), a steady motion with ``varpi^2 > 0`` (stable).
 NO_MOTION, UNSTABLE, STABLE = 0, 1, 2
-
-
-def _real_array(name: str, value) -> np.ndarray:
-    try:
-        out = np.asarray(value, dtype=float)
-    except OverflowError:  # an int beyond floating-point range
-        raise ParameterError(f"{name} must be finite, got {value!r}") from None
-    except (TypeError, ValueError):
-        raise ParameterTypeError(f"{name} must be a real number or an array of real numbers, "
-                                 f"got {type(value).__name__} {value!r}") from None
-    return out
 
 
 def existence_codes(h: float, theta0, r_C) -> np.ndarray:
@@ -69,7 +59,7 @@ def existence_codes(h: float, theta0, r_C) -> np.ndarray:
     from rollingdisk.theory.steady import Omega0_sq
 
     h = check_h(h)
-    theta0, r_C = np.broadcast_arrays(_real_array("theta0", theta0), _real_array("r_C", r_C))
+    theta0, r_C = np.broadcast_arrays(real_array("theta0", theta0), real_array("r_C", r_C))
     with np.errstate(all="ignore"):
         O2 = np.asarray(Omega0_sq(h, theta0, r_C), float)
         exists = np.isfinite(O2) & (O2 > 0)
@@ -105,8 +95,8 @@ def varpi2_zero_surface(h, ground: str, theta0):
     from rollingdisk.theory.oscillations import critical_omega30_sq
 
     check_ground(ground)
-    lower, upper = critical_omega30_sq(_real_array("h", h_of(h)), ground,
-                                       _real_array("theta0", theta0))
+    lower, upper = critical_omega30_sq(real_array("h", h_of(h)), ground,
+                                       real_array("theta0", theta0))
     with np.errstate(all="ignore"):
         return np.sqrt(np.where(lower > 0, lower, np.nan))[()], np.sqrt(upper)[()]
 

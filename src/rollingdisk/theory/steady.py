@@ -36,7 +36,7 @@ import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground, check_h, h_of
 from rollingdisk.model.geometry import _inertia, h_tilde
-from rollingdisk.util.checks import check_real
+from rollingdisk.util.checks import check_real, real_array
 from rollingdisk.util.errors import ParameterError
 
 __all__ = [
@@ -487,8 +487,8 @@ def Omega0_sq(h, theta0, r_C):
     SE tilt (where ``Omega0`` is free) and where the denominator vanishes (``r_C = r_C*``).
     ``theta0 = 0`` is the limit ``theta0 -> 0+``.
     """
-    h, theta0, r_C = np.broadcast_arrays(*(np.asarray(a, dtype=float)
-                                           for a in (h_of(h), theta0, r_C)))
+    h, theta0, r_C = np.broadcast_arrays(*(real_array(n, a) for n, a in
+                                           (("h", h_of(h)), ("theta0", theta0), ("r_C", r_C))))
     with np.errstate(all="ignore"):
         ht = h_tilde(h, theta0)
         s, c = np.sin(theta0), np.cos(theta0)
@@ -507,8 +507,7 @@ def r_C_star(h, theta0):
     circles need ``r_C < r_C*`` where ``tan(theta0) < h~`` and ``r_C > r_C*`` where
     ``tan(theta0) > h~``.  NaN outside ``h >= 0, |theta0| < pi/2``.
     """
-    h, theta0 = np.broadcast_arrays(np.asarray(h_of(h), dtype=float),
-                                    np.asarray(theta0, dtype=float))
+    h, theta0 = np.broadcast_arrays(real_array("h", h_of(h)), real_array("theta0", theta0))
     with np.errstate(all="ignore"):
         ht = h_tilde(h, theta0)
         s, c = np.sin(theta0), np.cos(theta0)

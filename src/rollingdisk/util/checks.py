@@ -6,8 +6,7 @@ import math
 
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
-__all__ = ["check_real", "check_int"]
-
+__all__ = ["check_real", "check_int", "real_array"]
 
 
 def check_real(name: str, value, *, low: float | None = None, high: float | None = None,
@@ -76,6 +75,39 @@ def check_int(name: str, value, *, low: int | None = None, high: int | None = No
     if (low is not None and n < low) or (high is not None and n > high):
         raise ParameterError(f"{name} must be an integer in {allowed}, got {n!r}")
     return n
+
+
+def real_array(name: str, value):
+    """``value`` as a float ndarray (any shape), or raise naming ``name``.
+
+    For the vectorized formulas, which take arrays and may return NaN outside their domain:
+    NaN and infinities pass through, but a string, bytes or another non-number raises
+    :class:`ParameterTypeError` and an integer beyond floating-point range (``10**400``,
+    which numpy would turn into an ``OverflowError``) raises :class:`ParameterError`.
+
+    Examples
+    --------
+    >>> real_array("theta0", [0.1, 0.2]).tolist()
+    [0.1, 0.2]
+    """
+    import numpy as np
+
+    if isinstance(value, (str, bytes)):
+        raise ParameterTypeError(f"{name} must be a real number or an array of them, got "
+                                 f"{type(value).__name__} {value!r}")
+    try:
+        return np.asarray(value, dtype=float)
+    except OverflowError:
+        raise ParameterError(f"{name} must lie within floating-point range (|x| <= 1.8e308), "
+                             f"got an integer beyond it") from None
+    except (TypeError, ValueError):
+        raise ParameterTypeError(f"{name} must be a real number or an array of them, got "
+                                 f"{type(value).__name__} {_short(value)}") from None
+
+
+def _short(value) -> str:
+    text = repr(value)
+    return text if len(text) <= 80 else text[:77] + "..."
 
 
 def _as_float(value) -> float:
