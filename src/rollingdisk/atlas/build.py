@@ -233,100 +233,90 @@ def _write_atlas(disk, out: Path, chosen, *, quick: bool, pr: _Progress) -> tupl
 
 def _write_atlas_steps(disk, out, chosen, *, quick, pr, files, dpi, n_map, euler):
     """The steps of :func:`_write_atlas`, with the Euler's-disk helper process running."""
-    h = disk.h
-    from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
+    thr = _thresholds_step(disk, out, pr, files)
+    _map_steps(disk, out, quick=quick, pr=pr, files=files, dpi=dpi, n_map=n_map)
+    motions = _motion_steps(disk, out, chosen, quick=quick, pr=pr, files=files, dpi=dpi,
+                            euler=euler)
+    # 10. index page ------------------------------------------------------------------------
+    pr.step("index.html")
+    (out / "index.html").write_text(_index_html(disk.h, thr, motions,
+                                                [p.name for p in files]), encoding="utf-8")
+    pr.done()
+    return files, motions
 
-    from rollingdisk.plotting import plots as plotting
-    from rollingdisk.plotting.animation import animate
+
+def _thresholds_step(disk, out, pr, files) -> dict:
+    """Step 1: ``thresholds.json`` (SI beside when the disk has a size); the thresholds."""
     from rollingdisk.theory.oscillations import thresholds
-    from rollingdisk.theory.regions import STABLE
 
-    # 1. thresholds ------------------------------------------------------------------
     pr.step("thresholds")
     thr = thresholds(disk).as_dict()
     (out / "thresholds.json").write_text(
-        json.dumps({"h": h, **_floats(thr), **_thresholds_si(disk)}, indent=2,
+        json.dumps({"h": disk.h, **_floats(thr), **_thresholds_si(disk)}, indent=2,
                    allow_nan=False))
     files.append(out / "thresholds.json")
     pr.done()
+    return thr
 
+
+def _map_steps(disk, out, *, quick, pr, files, dpi, n_map):
+    """Steps 2-4: the existence, stability, varpi^2 and stable-for-every-omega30 maps.  The
+    disk as given: one with a physical scale labels the axes in SI (``plots.axis_label``)."""
+    from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
+
+    from rollingdisk.plotting import plots as plotting
+    from rollingdisk.theory.regions import STABLE
+
+    h = disk.h
     # 2. existence map (rough ground; on smooth ground every steady circle exists: a
-    # sentence on the page, not a panel of "none") ------------------------------------------
+    # sentence on the page, not a panel of "none")
     pr.step("existence map")
     fig = Figure(figsize=(6.4, 5.0))
     ax = fig.subplots(1, 1)
-    # h as given: a Disk with a physical scale labels the axes in SI (plots.axis_label)
     m_ex = plotting.plot_existence_map(disk, "rough", ax, n=n_map,
-                                       title=f"rough ground, $h={check_h(h):.4g}$")
+                                       title=f"rough ground, $h={h:.4g}$")
     fig.tight_layout()
     _save(fig, out / "existence.png", dpi, files)
     pr.done(f"stable share {m_ex.share(STABLE):.2f}")
-
-    # 3. stability maps -----------------------------------------------------------------
+    # 3. stability maps
     pr.step("stability maps")
     fig = Figure(figsize=(10.0, 5.0))
-    axs = fig.subplots(1, 2)
-    for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
+    for ax, ground in zip(fig.subplots(1, 2), ("rough", "smooth"), strict=True):
         plotting.plot_stability_map(disk, ground, ax, n=n_map,
                                     omega30_max=2.0 if ground == "rough" else 2.5)
     fig.tight_layout()
     _save(fig, out / "stability.png", dpi, files)
     fig = Figure(figsize=(10.0, 3.8))
-    axs = fig.subplots(1, 2)
-    for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
+    for ax, ground in zip(fig.subplots(1, 2), ("rough", "smooth"), strict=True):
         plotting.plot_varpi2_curves(disk, ground, ax, n=120 if quick else 400)
     fig.tight_layout()
     _save(fig, out / "varpi2.png", dpi, files)
     pr.done()
-
-    # 4. stable for every omega30 --------------------------------------------------------
+    # 4. stable for every omega30
     pr.step("regions stable for every omega30")
     fig = Figure(figsize=(10.0, 5.0))
-    axs = fig.subplots(1, 2)
-    h_top = max(1.5, 2.0 * check_h(h))
-    for ax, ground in zip(axs, ("rough", "smooth"), strict=True):
-        plotting.plot_all_omega30_stable(ground, ax, n=n_map, h_range=(0.0, h_top),
-                                         mark_h=h)
+    for ax, ground in zip(fig.subplots(1, 2), ("rough", "smooth"), strict=True):
+        plotting.plot_all_omega30_stable(ground, ax, n=n_map,
+                                         h_range=(0.0, max(1.5, 2.0 * h)), mark_h=h)
     fig.tight_layout()
     _save(fig, out / "all_omega30.png", dpi, files)
     pr.done()
 
-    # (no compile step: the two short runs below run the integrator uncompiled, so a cold
-    # atlas never waits for numba; see docs/simulation.md)
-    # 6./7. two steady motions, simulated; the first animation is drawn in a second process
-    # while this one goes on (the two cores of a laptop), the second one here
+
+def _motion_steps(disk, out, chosen, *, quick, pr, files, dpi, euler) -> dict:
+    """Steps 6-9: two steady circles simulated (the first animation drawn in a second
+    process while this one goes on: the two cores of a laptop), the stable one's exact
+    motion, and Euler's disk (run alongside since the start).  No compile step: the two
+    short runs run the integrator uncompiled, so a cold atlas never waits for numba."""
     motions = {}
     helpers = []
     try:
         for kind in ("stable", "unstable"):
-            pr.step(f"{kind} steady circle: simulate, plot, animate")
-            chosen_motion = getattr(chosen, kind)
-            theta0, Omega0 = chosen_motion.theta0, chosen_motion.Omega0
-            t_end = 12.0 if quick else 30.0
-            kick = 0.05 if kind == "stable" else 1e-4
-            motion, stab, traj = steady_trajectory(disk, "rough", theta0, Omega0=Omega0,
-                                                   kick=kick, t_end=t_end,
-                                                   n_out=300 if quick else 1500)
-            fig = Figure(figsize=(9.0, 6.5))
-            plotting.plot_trajectory(traj, fig, theta0=theta0,
-                                     title=f"{kind} steady circle, rough ground, "
-                                           f"h = {check_h(h):.4g}")
-            _save(fig, out / f"motion_{kind}.png", dpi, files)
-            gif = out / f"motion_{kind}.gif"
-            kw = dict(n_frames=6 if quick else 60, fps=12, dpi=55 if quick else 70,
-                      title=f"{kind} circle, h = {check_h(h):.4g}")
-            if kind == "stable" and (os.cpu_count() or 1) > 1:
-                helpers.append(_start_animation(traj, gif, kw))
-            else:
-                animate(traj, gif, **kw)
-            files.append(gif)
-            motions[kind] = _motion_record(motion, stab, traj, kick)
-            pr.done(f"status {motions[kind]['status']}")
-        # 8. the stable circle's exact motion at finite amplitude (while the helper draws)
+            motions[kind] = _one_motion(disk, out, getattr(chosen, kind), kind, quick=quick,
+                                        pr=pr, files=files, dpi=dpi, helpers=helpers)
         pr.step("exact motion: quadrature, rosette, backbone")
         motions["exact"] = _exact_section(chosen.stable, out, dpi, files)
         pr.done(f"period {motions['exact']['period']:.6g}")
-        # 9. Euler's disk, run alongside since the start
         pr.step("Euler's disk (run alongside)")
         euler.join()
         if euler.exitcode != 0:
@@ -346,13 +336,38 @@ def _write_atlas_steps(disk, out, chosen, *, quick, pr, files, dpi, n_map, euler
             if proc.is_alive():
                 proc.terminate()
                 proc.join()
+    return motions
 
-    # 10. index page ------------------------------------------------------------------------
-    pr.step("index.html")
-    (out / "index.html").write_text(_index_html(h, thr, motions, [p.name for p in files]),
-                                    encoding="utf-8")
-    pr.done()
-    return files, motions
+
+def _one_motion(disk, out, chosen_motion, kind, *, quick, pr, files, dpi, helpers) -> dict:
+    """One steady circle (``kind``: "stable" or "unstable"): simulated from a small kick,
+    plotted and animated; its record for the page."""
+    from matplotlib.figure import Figure
+
+    from rollingdisk.plotting import plots as plotting
+    from rollingdisk.plotting.animation import animate
+
+    pr.step(f"{kind} steady circle: simulate, plot, animate")
+    theta0, Omega0 = chosen_motion.theta0, chosen_motion.Omega0
+    kick = 0.05 if kind == "stable" else 1e-4
+    motion, stab, traj = steady_trajectory(disk, "rough", theta0, Omega0=Omega0, kick=kick,
+                                           t_end=12.0 if quick else 30.0,
+                                           n_out=300 if quick else 1500)
+    fig = Figure(figsize=(9.0, 6.5))
+    plotting.plot_trajectory(traj, fig, theta0=theta0,
+                             title=f"{kind} steady circle, rough ground, h = {disk.h:.4g}")
+    _save(fig, out / f"motion_{kind}.png", dpi, files)
+    gif = out / f"motion_{kind}.gif"
+    kw = dict(n_frames=6 if quick else 60, fps=12, dpi=55 if quick else 70,
+              title=f"{kind} circle, h = {disk.h:.4g}")
+    if kind == "stable" and (os.cpu_count() or 1) > 1:
+        helpers.append(_start_animation(traj, gif, kw))
+    else:
+        animate(traj, gif, **kw)
+    files.append(gif)
+    record = _motion_record(motion, stab, traj, kick)
+    pr.done(f"status {record['status']}")
+    return record
 
 
 def _exact_section(motion, out: Path, dpi: int, files: list) -> dict:
@@ -649,34 +664,15 @@ other commands.</p>"""
 
 
 def _index_html(h, thr: dict, motions: dict, names: list) -> str:
-    e = html.escape
+    """The atlas page: every section in order, with relative image paths only."""
     hv = check_h(h)  # h, or a Disk with or without a physical scale
+    return "".join([_page_head(h, hv), _thresholds_section(thr), _MAPS_SECTION,
+                    _motions_section(motions), _exact_html(motions["exact"]),
+                    _page_tail(motions, names)])
 
-    def motion_block(kind):
-        m = motions[kind]
-        verdict = (f"stable: &varpi;&sup2; = {_fmt(m['varpi2'])} g/a, &varpi; = "
-                   f"{_fmt(m['varpi'])} {_W} (period {_fmt(m['period'])} {_T}); the "
-                   f"simulation oscillates at {_fmt(m['measured'])} {_W}" if m["stable"] else
-                   f"unstable: &varpi;&sup2; = {_fmt(m['varpi2'])} g/a, growth rate "
-                   f"&radic;(&minus;&varpi;&sup2;) = {_fmt(m['growth_rate'])} {_W}; the "
-                   f"simulation grows at {_fmt(m['measured'])} {_W}")
-        return f"""
-<h3 id="{kind}">{kind.capitalize()} steady circle</h3>
-<div class="scroll"><table><tr><th>&theta;<sub>0</sub></th><th>&Omega;<sub>0</sub> [{_W}]</th>
-<th>&omega;<sub>20</sub> [{_W}]</th><th>&omega;<sub>30</sub> [{_W}]</th>
-<th>r<sub>C</sub> [a]</th><th>r<sub>P</sub> [a]</th></tr>
-<tr><td>{_deg(m['theta0'])}</td><td>{_fmt(m['Omega0'])}</td><td>{_fmt(m['omega20'])}</td>
-<td>{_fmt(m['omega30'])}</td><td>{_fmt(m['r_C'])}</td><td>{_fmt(m['r_P'])}</td></tr>
-</table></div>
-<p>Closed form (section 4.1): {verdict}. Simulated from the steady state with a kick
-d&theta;/dt(0) = {_fmt(m['kick'], 2)} {_W} until t = {_fmt(m['t_end'])} {_T} (status
-<code>{e(m['status'])}</code>):
-largest |&theta; &minus; &theta;<sub>0</sub>| = {_deg(m['max_theta_dev'], 3)}, largest energy
-error {_fmt(m['energy_error'], 2)} mga.</p>
-<div class="pair">{_img(f"motion_{kind}.png", f"{kind} motion plots", 620)}
-{_img(f"motion_{kind}.gif", f"{kind} motion animation", 350)}</div>"""
 
-    ex = motions["exact"]
+def _page_head(h, hv) -> str:
+    """The page's head, title, introduction, units and table of contents."""
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">
@@ -695,7 +691,12 @@ static equilibrium (SE) tilt is tan&theta;<sub>0</sub> = h, &theta;<sub>0</sub> 
 {_units_paragraph(h)}
 {_toc()}
 
-<h2 id="thresholds">Stability thresholds</h2>
+"""
+
+
+def _thresholds_section(thr: dict) -> str:
+    """The thresholds section: what they mean, and the table."""
+    return f"""<h2 id="thresholds">Stability thresholds</h2>
 <p>The steady motions whose stability depends on one rate only. A straight line is stable
 when the disk spins fast enough about its own axis (|&omega;<sub>20</sub>| above the
 threshold), a circle in the SE position and the spin in place when it turns fast enough
@@ -703,7 +704,11 @@ threshold), a circle in the SE position and the spin in place when it turns fast
 <code>thresholds.json</code>.</p>
 {_thresholds_table(thr)}
 
-<h2 id="existence">Where steady circles exist</h2>
+"""
+
+
+#: The maps' sections (existence, stability, stable for every omega30): text and images.
+_MAPS_SECTION = (f"""<h2 id="existence">Where steady circles exist</h2>
 <p><b>Rough ground</b> (rolling without slip): in the (&theta;<sub>0</sub>, r<sub>C</sub>)
 plane a steady circle exists where &Omega;<sub>0</sub>&sup2; of eq. (31) is positive; dark:
 none, gray: it exists but is unstable (&varpi;&sup2; &lt; 0), white: stable. The red curve is
@@ -737,17 +742,27 @@ which a disturbance grows.</p>
 marks this disk.</p>
 {_img("all_omega30.png", "regions stable for every omega30")}
 
-<h2 id="motions">Two steady circles, simulated</h2>
+""")
+
+
+def _motions_section(motions: dict) -> str:
+    """The two simulated steady circles."""
+    return f"""<h2 id="motions">Two steady circles, simulated</h2>
 <p>Each motion starts on the steady circle with a small kick d&theta;/dt, and is integrated
 with the full nonlinear equations (rough ground: eqs. (1), (2), (37), (38)). The plots show
 the paths of C and of the contact point P, &theta;(t), the energy error and the contact force
 (F<sub>z</sub> &gt; 0 keeps contact). The animation draws the disk as a cylinder of thickness
 2h; the red sectors are fixed in the body, so they show the rotation &phi;; the red line on the
 plane is the path of P.</p>
-{motion_block("stable")}
-{motion_block("unstable")}
+{_motion_block(motions["stable"], "stable")}
+{_motion_block(motions["unstable"], "unstable")}
 
-<h2 id="exact">The stable circle at finite amplitude: the exact motion</h2>
+"""
+
+
+def _exact_html(ex: dict) -> str:
+    """The stable circle's exact motion at finite amplitude."""
+    return f"""<h2 id="exact">The stable circle at finite amplitude: the exact motion</h2>
 <p>On rough and smooth ground the disk is integrable: &omega;<sub>2</sub>,
 &omega;<sub>3</sub> and (d&theta;/dt)&sup2; are functions of &theta; alone, and time,
 &psi; and the contact point's path follow by quadrature (<code>rollingdisk exact</code>,
@@ -762,7 +777,13 @@ against amplitude, which starts at &varpi; and reaches
 {_deg(ex['largest_amplitude'], 3)}.</p>
 {_img("exact.png", "exact motion: theta over a period, rosette, backbone")}
 
-{_euler_block(motions["euler_disk"])}
+"""
+
+
+def _page_tail(motions: dict, names: list) -> str:
+    """Euler's disk, where to learn more, the files, the end of the page."""
+    e = html.escape
+    return f"""{_euler_block(motions["euler_disk"])}
 
 {_learn_more()}
 
@@ -770,3 +791,30 @@ against amplitude, which starts at &varpi; and reaches
 <p class="note">{" &middot; ".join(f'<a href="{e(n)}">{e(n)}</a>' for n in names)}</p>
 </body></html>
 """
+
+
+def _motion_block(m: dict, kind: str) -> str:
+    """The page's section of one simulated steady circle."""
+    e = html.escape
+    verdict = (f"stable: &varpi;&sup2; = {_fmt(m['varpi2'])} g/a, &varpi; = "
+               f"{_fmt(m['varpi'])} {_W} (period {_fmt(m['period'])} {_T}); the "
+               f"simulation oscillates at {_fmt(m['measured'])} {_W}" if m["stable"] else
+               f"unstable: &varpi;&sup2; = {_fmt(m['varpi2'])} g/a, growth rate "
+               f"&radic;(&minus;&varpi;&sup2;) = {_fmt(m['growth_rate'])} {_W}; the "
+               f"simulation grows at {_fmt(m['measured'])} {_W}")
+    return f"""
+<h3 id="{kind}">{kind.capitalize()} steady circle</h3>
+<div class="scroll"><table><tr><th>&theta;<sub>0</sub></th><th>&Omega;<sub>0</sub> [{_W}]</th>
+<th>&omega;<sub>20</sub> [{_W}]</th><th>&omega;<sub>30</sub> [{_W}]</th>
+<th>r<sub>C</sub> [a]</th><th>r<sub>P</sub> [a]</th></tr>
+<tr><td>{_deg(m['theta0'])}</td><td>{_fmt(m['Omega0'])}</td><td>{_fmt(m['omega20'])}</td>
+<td>{_fmt(m['omega30'])}</td><td>{_fmt(m['r_C'])}</td><td>{_fmt(m['r_P'])}</td></tr>
+</table></div>
+<p>Closed form (section 4.1): {verdict}. Simulated from the steady state with a kick
+d&theta;/dt(0) = {_fmt(m['kick'], 2)} {_W} until t = {_fmt(m['t_end'])} {_T} (status
+<code>{e(m['status'])}</code>):
+largest |&theta; &minus; &theta;<sub>0</sub>| = {_deg(m['max_theta_dev'], 3)}, largest energy
+error {_fmt(m['energy_error'], 2)} mga.</p>
+<div class="pair">{_img(f"motion_{kind}.png", f"{kind} motion plots", 620)}
+{_img(f"motion_{kind}.gif", f"{kind} motion animation", 350)}</div>"""
+
