@@ -18,6 +18,7 @@ import pytest
 import rollingdisk as rd
 from rollingdisk.friction.euler_disk import (
     AIR_VISCOSITY,
+    FIT_WINDOW_AIR,
     EulerDisk,
     _energy,
     _family,
@@ -225,15 +226,22 @@ def test_lift_off_located():
 
 @pytest.mark.slow
 def test_toy_with_air_film():
-    """Moffatt's film: exponents near 1/3, -1/6 on the window where the disk still follows
-    the steady family (it leaves it below alpha ~ 0.01, see docs/friction.md)."""
+    """The squeeze film (the derived constant K = 1.28113, docs/errata-models.md): alone, the
+    exponents tend to 1/3, -1/6 (Moffatt's) on the window where the disk still follows the
+    steady family (it leaves it below alpha ~ 0.01, see docs/friction.md); with the toy's
+    rolling resistance beside it, the end time is the adiabatic prediction's."""
+    alone = run_euler_disk(EulerDisk(air_viscosity=AIR_VISCOSITY, rolling_resistance=0.0),
+                           fit_window=FIT_WINDOW_AIR)
+    assert alone.status == "completed" and alone.end == "fell-flat", alone.message
+    assert alone.energy_balance <= 1e-9
+    assert alone.exponents["alpha"] == pytest.approx(alone.predicted["alpha"], abs=0.01)
+    assert alone.exponents["Omega"] == pytest.approx(alone.predicted["Omega"], abs=0.01)
+    assert alone.predicted["alpha"] == pytest.approx(1 / 3, abs=0.01)
     r = run_euler_disk(EulerDisk(air_viscosity=AIR_VISCOSITY))
     assert r.status == "completed" and r.end == "fell-flat", r.message
     assert r.energy_balance <= 1e-9
-    assert r.dissipated["air"][-1] > 0.1
+    assert r.dissipated["air"][-1] > 0.05
     assert r.t_end == pytest.approx(r.predicted_t_end, rel=0.02)
-    assert r.exponents["alpha"] == pytest.approx(r.predicted["alpha"], abs=0.02)
-    assert r.exponents["Omega"] == pytest.approx(r.predicted["Omega"], abs=0.01)
 
 
 # ------------------------------------------------------------------ bounded work, input

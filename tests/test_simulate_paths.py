@@ -130,7 +130,7 @@ def test_cold_cache_run_continues_uncompiled_and_a_background_process_fills_the_
 
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path), PYTHONPATH=SRC)
     code = ("import sys, rollingdisk as rd\n"
-            "from rollingdisk import _jit\n"
+            "from rollingdisk.integrate import jit as _jit\n"
             "_jit.PY_BUDGET = 0.0\n"
             "tr = rd.simulate(rd.Disk(h=0.1), 'rough', (0, 20), [0, 0, 0, 0.3, 0, 0, 2, 0.5])\n"
             "assert tr.status == 'completed'\n"
