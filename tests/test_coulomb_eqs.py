@@ -102,7 +102,7 @@ def test_energy_rate_is_the_sum_of_powers(mode):
         dy = rd.coulomb_rhs(disk, g, mode, y)
         c = rd.coulomb_contact(disk, g, mode, y)
         th, w1, w2, w3 = y[5], y[7], y[8], y[9]
-        y_P, z_P = disk.contact_point(th)
+        y_P, z_P = disk.contact_point_xyz(th)
         k1 = disk.k1_sq
         v_Cz = -w1 * y_P
         dv_Cz = -dy[7] * y_P + w1 * w1 * z_P  # d y_P/d theta = -z_P

@@ -139,4 +139,4 @@ def test_inertia_and_contact_point_match_disk_model():
         assert float(d.inertia[1]) == disk.k2_sq
         for th in (-1.2, -0.3, 0.4, 1.1):
             yz = [float(e.subs({ht: disk.h_tilde(th), theta: th})) for e in d.contact_point]
-            assert np.allclose(disk.contact_point(th), yz, rtol=1e-14, atol=1e-15)
+            assert np.allclose(disk.contact_point_xyz(th), yz, rtol=1e-14, atol=1e-15)

@@ -222,7 +222,7 @@ def test_lowest_point_against_sympy_and_kinds():
     # eq. (4): r = (0, y_P, z_P) for |theta| < pi/2
     for th in (-0.8, 0.3):
         r = im.lowest_point(disk, [0, 0, 2, 0, th, 0, 0, 0, 0, 0, 0, 0]).r
-        np.testing.assert_allclose(r[1:], disk.contact_point(th), atol=1e-15)
+        np.testing.assert_allclose(r[1:], disk.contact_point_xyz(th), atol=1e-15)
 
 
 # --------------------------------------------------------------- the Delassus matrix

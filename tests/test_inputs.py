@@ -72,7 +72,7 @@ def test_units_need_a_scale_and_convert_consistently():
 def test_h_tilde_and_static_equilibrium():
     disk = rd.Disk(0.3)
     assert disk.h_tilde(0.2) == 0.3 and disk.h_tilde(-0.2) == -0.3
-    y_P, _ = disk.contact_point(disk.static_equilibrium_theta)
+    y_P, _ = disk.contact_point_xyz(disk.static_equilibrium_theta)
     assert abs(y_P) < 1e-15  # P right below C in the SE position (Figure 3b)
 
 

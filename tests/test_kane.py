@@ -90,7 +90,7 @@ def test_lowest_rim_point_is_eq_4(sign):
             # eta = cos y + sin z, zeta = -sin y + cos z
             y_P = ce * np.cos(theta) - cz * np.sin(theta)
             z_P = ce * np.sin(theta) + cz * np.cos(theta)
-            assert close((y_P, z_P), Disk(h).contact_point(theta), 1e-15)
+            assert close((y_P, z_P), Disk(h).contact_point_xyz(theta), 1e-15)
 
 
 @pytest.mark.parametrize("ground", ["rough", "smooth"])

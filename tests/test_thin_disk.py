@@ -39,7 +39,7 @@ def test_mapping_round_trip_and_centre():
         cx, cy, cz = centre(*x[:5])
         assert abs(cx - y[0]) <= 1e-12 * (1 + abs(y[0]))
         assert abs(cy - y[1]) <= 1e-12 * (1 + abs(y[1]))
-        assert abs(cz + Disk(0.0).contact_point(y[3])[1]) <= 1e-14
+        assert abs(cz + Disk(0.0).contact_point_xyz(y[3])[1]) <= 1e-14
 
 
 def test_state_derivatives_agree():

@@ -730,7 +730,7 @@ def free_state_from_rolling(disk: Disk, ground: str, y) -> np.ndarray:
         raise ParameterError(f"y: theta must lie in (-pi/2, pi/2) on a rim edge, got "
                                 f"{theta!r}")
     w1, w2, w3 = g["omega1"], g["omega2"], g["omega3"]
-    y_P, z_P = disk.contact_point(theta)  # eq. (4)
+    y_P, z_P = disk.contact_point_xyz(theta)  # eq. (4)
     if ground == "rough":
         ht = disk.h_tilde(theta)
         vx, vy = w2 - ht * w3, w1 * z_P  # eq. (37)

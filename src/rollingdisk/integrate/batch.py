@@ -229,7 +229,7 @@ def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, ato
     _rhs(rough, h, y, f)
     for i in range(n):
         K[i, 0] = f[i]
-    h_abs = initial_step(rough, h, 0.0, y, f, t_end, np.inf, rtol, atol)
+    dt_abs = initial_step(rough, h, 0.0, y, f, t_end, np.inf, rtol, atol)
     while status == 0:
         if t >= t_end:
             status = COMPLETED
@@ -238,19 +238,19 @@ def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, ato
             status = FAILED
             break
         min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
-        if h_abs < min_step:
-            h_abs = min_step
+        if dt_abs < min_step:
+            dt_abs = min_step
         accepted = False
         rejected = False
         while not accepted:
-            if h_abs < min_step:
+            if dt_abs < min_step:
                 break
-            dt = h_abs
+            dt = dt_abs
             if t + dt > t_end:
                 dt = t_end - t
             _step4(rough, h, y, dt, K, ytmp, y_new)
             err = _error_norm(y, y_new, K, dt, rtol, atol)
-            h_abs = dt * _step_factor(err, rejected)
+            dt_abs = dt * _step_factor(err, rejected)
             if err < 1.0:
                 accepted = True
             else:

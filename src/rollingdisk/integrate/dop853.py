@@ -494,16 +494,16 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atolv, max_step, first_ste
     n_rhs += 1
 
     if first_step > 0.0:
-        h_abs = first_step
+        dt_abs = first_step
     else:
-        h_abs = initial_step_v(rough, h, t0, y, f, t_end, max_step, rtol, atolv)
+        dt_abs = initial_step_v(rough, h, t0, y, f, t_end, max_step, rtol, atolv)
         n_rhs += 1
     status = RUNNING
     event = -1
-    if not (h_abs > 0.0) or not np.isfinite(h_abs):
+    if not (dt_abs > 0.0) or not np.isfinite(dt_abs):
         status = FAILED  # the first step came out 0 (or not finite): nothing to integrate
     n_here = 0
-    h_next = h_abs
+    h_next = dt_abs
     while status == RUNNING:
         if t >= t_end:
             status = COMPLETED
@@ -512,22 +512,22 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atolv, max_step, first_ste
             status = STEP_BUDGET
             break
         min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
-        if h_abs > max_step:
-            h_abs = max_step
-        if h_abs < min_step:
-            h_abs = min_step
+        if dt_abs > max_step:
+            dt_abs = max_step
+        if dt_abs < min_step:
+            dt_abs = min_step
         rejected = False
         accepted = False
         while not accepted:
-            if h_abs < min_step:
+            if dt_abs < min_step:
                 status = FAILED
                 break
-            dt = h_abs
+            dt = dt_abs
             t_new = t + dt
             if t_new > t_end:
                 t_new = t_end
             dt = t_new - t
-            h_abs = abs(dt)
+            dt_abs = abs(dt)
             if not dt > 0.0:
                 status = FAILED
                 break
@@ -539,10 +539,10 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atolv, max_step, first_ste
                     finite = False
             err = _error_norm_v(y, y_new, K, dt, rtol, atolv) if finite else np.inf
             if err < 1.0:
-                h_next = h_abs * _step_factor(err, rejected)
+                h_next = dt_abs * _step_factor(err, rejected)
                 accepted = True
             else:
-                h_abs *= _step_factor(err, rejected)
+                dt_abs *= _step_factor(err, rejected)
                 rejected = True
         if status == FAILED:
             break
@@ -631,10 +631,10 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atolv, max_step, first_ste
             f[i] = f_new[i]
         for i in range(3):
             g_old[i] = g_new[i]
-        h_abs = h_next
+        dt_abs = h_next
         if t_pause <= t < t_end or n_here >= chunk_steps:
             break  # paused, status RUNNING
-    return (ts[:m], ys[:m], n_steps, n_rhs, status, event, h_abs, t, y, seg_t[:nseg],
+    return (ts[:m], ys[:m], n_steps, n_rhs, status, event, dt_abs, t, y, seg_t[:nseg],
             seg_dt[:nseg], seg_y[:nseg], seg_F[:nseg])
 
 

@@ -48,8 +48,9 @@ class Trajectory:
     ----------
     disk : Disk
         The disk simulated.
-    ground : {"rough", "smooth"}
-        The ground.
+    ground : {"rough", "smooth"} or Coulomb
+        The ground: an ideal one by name, or the :class:`~rollingdisk.Coulomb` value of a
+        run of :func:`~rollingdisk.simulate_coulomb` (a ``CoulombTrajectory``).
     t : ndarray, shape (n,)
         Times (time unit ``sqrt(a/g)``).  The last one is the event time if a guard fired.
     y : ndarray, shape (n_state, n)
@@ -94,7 +95,7 @@ class Trajectory:
     """
 
     disk: Disk
-    ground: str
+    ground: object  # "rough" | "smooth" | Coulomb (friction layer, above this one)
     t: np.ndarray
     y: np.ndarray
     status: str

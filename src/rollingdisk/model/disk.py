@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rollingdisk.model.geometry import _inertia, h_tilde
+from rollingdisk.model.geometry import _geometry, _inertia, h_tilde
 from rollingdisk.util.checks import check_real
 from rollingdisk.util.errors import ParameterError
 
@@ -138,11 +138,11 @@ class Disk:
         """``h~ = h sgn(theta)``: the rim edge that touches the plane (eq. 4)."""
         return h_tilde(self.h, theta)
 
-    def contact_point(self, theta: float) -> tuple[float, float]:
-        """Contact point P in the frame Cxyz, ``(y_P, z_P)`` (eq. 4), in units of ``a``."""
-        ht = self.h_tilde(theta)
-        s, c = math.sin(theta), math.cos(theta)
-        return s - ht * c, -(c + ht * s)
+    def contact_point_xyz(self, theta: float) -> tuple[float, float]:
+        """Contact point P in the disk-fixed frame Cxyz, ``(y_P, z_P)`` (eq. 4), in units of
+        ``a`` (:func:`rollingdisk.contact_point` gives P on the plane, in OXYZ)."""
+        g = _geometry(self.h, float(theta))
+        return float(g[4]), float(g[5])
 
     @property
     def static_equilibrium_theta(self) -> float:

@@ -23,10 +23,10 @@ inclination and rotation angles, ``omega1..3`` the angular velocity in C xi eta 
 Every formula here is checked against the sympy derivation in :mod:`rollingdisk.symbolic`
 by ``tests/test_derivation.py``; see ``docs/errata.md``.
 
-Why one module of ~650 lines: the kernels of every ground and mode (rough, smooth, and the
-Coulomb rolling/sliding modes at the end) must live in one namespace, because
-:mod:`rollingdisk.integrate.numba_core` compiles them from this module's source and re-binds the
-kernels they call; splitting them would split that namespace.
+The kernels of the two ideal grounds live in one namespace (with the geometry and state
+kernels they import) because :mod:`rollingdisk.integrate.numba_core` compiles them from this
+module's source and re-binds the kernels they call.  The Coulomb modes are in
+:mod:`rollingdisk.friction.coulomb`.
 """
 
 from __future__ import annotations

@@ -8,7 +8,7 @@ motions exist, which are stable) is computed in :mod:`rollingdisk.theory.regions
 imported only when a plot function is called; every function takes ``ax=None`` (a new
 figure is made when it is ``None``), returns what it drew and never calls ``plt.show()``.
 
-About 600 lines on purpose: one function per kind of map or trajectory plot, sharing the
+One module on purpose: one function per kind of map or trajectory plot, sharing the
 class colours, labels and file helpers at the top (split by plot kind, they would be
 scattered over several modules).
 
