@@ -1,20 +1,39 @@
-"""When the compiled integrator is worth loading, and filling a cold compile cache.
+"""When the compiled integrator is worth loading, which method ``"auto"`` runs, and filling a
+cold compile cache.
 
 Loading the numba integrator costs about 0.5 s (``import numba`` and the cached machine
-code), compiling it with an empty cache 10-20 s; the same integrator run uncompiled
-(:mod:`rollingdisk.integrate.pycore`) takes about 30 times as long per step as compiled.  So
-:func:`rollingdisk.simulate` starts every run uncompiled and
+code), compiling it with an empty cache 10-50 s; the same integrator run uncompiled
+(:mod:`rollingdisk.integrate.pycore`) takes 30-65 times as long per step as compiled.  The
+rule (the one place it is written; docs/simulation.md quotes it):
 
-* if the compiled code is already loaded in this process, uses it from the start;
-* if the run is not done after :data:`PY_BUDGET` seconds and the on-disk cache is ready,
-  loads the compiled code (0.5 s) and continues with it (the very same steps: the run
-  pauses and resumes);
-* if the cache is cold, starts :func:`start_background_compile`: a detached process that
-  compiles and fills the on-disk cache, then marks it ready; the run goes on
-  uncompiled and switches once the mark appears.  A short or medium run never waits for a
-  compiler; a run that would need more than :data:`COMPILE_GUESS` seconds more
-  uncompiled on a machine with no idle core waits for the compiler instead of competing
-  with it for the CPU (:func:`worth_waiting`): then it costs what compiling first did.
+* The process counts the seconds it has spent integrating uncompiled, over all its runs
+  (:func:`py_seconds`).  While the count is under :data:`PY_BUDGET` (0.4 s) a run goes
+  uncompiled: a short script, or the first medium run of one, never pays for ``import
+  numba``.
+* Once the count reaches :data:`PY_BUDGET` in total (not per run) and the on-disk cache is
+  ready, the process loads the compiled code (0.5 s) at the next chunk boundary of the
+  run under way (the very same steps: the run pauses and resumes) and every later run is
+  compiled from its first step.  A loop of medium runs (0.3 s each uncompiled) is thus
+  compiled from the second run on, where before each run started uncompiled again and,
+  never reaching the budget on its own, stayed uncompiled.
+* If the cache is cold when the count reaches the budget, :func:`start_background_compile`
+  starts (once per process) a detached process that compiles and fills the on-disk cache,
+  then marks it ready; runs go on uncompiled and switch once the mark appears.  A run
+  never waits for a compiler, except a run that would need more than
+  :data:`COMPILE_GUESS` seconds more uncompiled on a machine with no idle core
+  (:func:`worth_waiting`): it waits instead of competing with the compiler for the CPU.
+* If the compiled code is loaded (an earlier run, or :func:`jit_compile`), every run uses
+  it from the start.
+
+``simulate(method="auto")`` (the default) asks :func:`auto_method` which method the process
+has that is fastest for the tolerance, at equal accuracy (energy drift): user events need
+scipy's solver, ``dense_output`` and ``first_step`` DOP853; otherwise, for tolerances up to
+:data:`TAYLOR_BELOW`, the compiled Taylor method at the tolerance times
+:data:`TAYLOR_TOL_FACTOR` (its drift at that tolerance is no larger than DOP853's at the
+requested one, and it is 1.5-10 times as fast), and DOP853 above.  While the process has
+no compiled code, the Taylor part starts as uncompiled DOP853 (the Taylor method exists
+only compiled) and goes on with the Taylor method from the chunk at which the compiled
+code is loaded.
 
 The mark is a file named after the sources (path, size and modification time of
 ``_dop853.py``, ``equations.py``, ``_numba_core.py`` and numba's own ``__init__.py``) and
@@ -37,9 +56,25 @@ from pathlib import Path
 
 import numpy as np
 
-#: Seconds of uncompiled integration after which a run switches to the compiled code
-#: (about what loading it costs, so a run never pays more than twice the best choice).
+#: Seconds of uncompiled integration, in total over the runs of the process, after which
+#: the compiled code is loaded (about what loading it costs, so a process never pays more
+#: than about twice the better of the two paths).
 PY_BUDGET = 0.4
+
+#: ``method="auto"`` uses the Taylor method for tolerances ``min(rtol, atol)`` up to this
+#: (measured on the benchmark job at equal energy drift: Taylor 1.3-1.5x as fast at 1e-5,
+#: level around 1e-4, DOP853 ahead above; docs/simulation.md).
+TAYLOR_BELOW = 3e-5
+#: ``method="auto"`` runs the Taylor method at ``rtol`` and ``atol`` times this (floored at
+#: 100 eps): its energy drift at the tolerance so scaled is no larger than DOP853's at the
+#: tolerance asked for (measured on the benchmark job from 1e-4 to 1e-12), so ``"auto"``
+#: gives the accuracy the tolerance gave before it picked methods.
+TAYLOR_TOL_FACTOR = 1e-3
+_TOL_FLOOR = 100 * float(np.finfo(float).eps)
+
+#: The clock of the uncompiled seconds (a test replaces it).
+clock = time.perf_counter
+_py_seconds = 0.0
 
 #: About how long a compile takes (seconds): a run projected to need more than this
 #: uncompiled waits for the background compiler when no core is idle (see worth_waiting).
@@ -126,6 +161,64 @@ def start_background_compile() -> bool:
     except OSError:
         return False
     return True
+
+
+def py_seconds() -> float:
+    """Seconds this process has spent integrating uncompiled, over all its runs."""
+    return _py_seconds
+
+
+def spend(seconds: float) -> None:
+    """Count ``seconds`` more of uncompiled integration against :data:`PY_BUDGET`."""
+    global _py_seconds
+    _py_seconds += max(0.0, float(seconds))
+
+
+def budget_spent() -> bool:
+    """Whether the process has integrated uncompiled for :data:`PY_BUDGET` s in total."""
+    return _py_seconds >= PY_BUDGET
+
+
+def pick_core(state: dict, elapsed: float, fraction: float):
+    """The integrator for the next chunk of a run, by the rule of this module's docstring:
+    ``(module, compiled)``.  ``state``: a dict kept by the run (what it has started or
+    waited for); ``elapsed``: seconds the run has spent so far; ``fraction``: the part of
+    its span done (for :func:`worth_waiting`)."""
+    if _core is not None:
+        return _core, True
+    if budget_spent():
+        cold = not ready()
+        if cold and not state.get("spawned"):
+            state["spawned"] = True
+            start_background_compile()
+        elif cold and not state.get("waited") and worth_waiting(elapsed, fraction):
+            state["waited"] = True
+            wait_ready()
+        if ready():
+            jit_compile()  # loads from the on-disk cache
+            return _core, True
+    from rollingdisk.integrate import pycore
+
+    return pycore, False
+
+
+def auto_method(rtol: float, atol: float, *, events: bool, dense_output: bool,
+                first_step: bool) -> tuple[str, float, float]:
+    """What ``simulate(method="auto")`` runs: ``(method, rtol, atol)``.
+
+    ``"scipy"`` with user events, ``"dop853"`` with ``dense_output`` or ``first_step``
+    (options of those methods only) or for a tolerance ``min(rtol, atol)`` above
+    :data:`TAYLOR_BELOW`; otherwise ``"auto-taylor"``: the Taylor method at ``rtol`` and
+    ``atol`` times :data:`TAYLOR_TOL_FACTOR` (floored at 100 eps) once the compiled code is
+    loaded, uncompiled DOP853 at the tolerances asked for until then (see the module
+    docstring).
+    """
+    if events:
+        return "scipy", rtol, atol
+    if dense_output or first_step or min(rtol, atol) > TAYLOR_BELOW:
+        return "dop853", rtol, atol
+    return ("auto-taylor", max(rtol * TAYLOR_TOL_FACTOR, _TOL_FLOOR),
+            max(atol * TAYLOR_TOL_FACTOR, min(atol, _TOL_FLOOR)))
 
 
 def worth_waiting(elapsed: float, fraction: float) -> bool:
