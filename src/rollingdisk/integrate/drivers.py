@@ -138,7 +138,7 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
     n_steps = n_rhs = 0
     h_next = 0.0 if first_step is None else first_step
     tc, yc = t0, y
-    chunk = {"compiled": 2000, "uncompiled": 50, "taylor": 2000}
+    chunk = {"compiled": 2000, "uncompiled": 50, "taylor": 2000 if progress is None else 10}
     state = {}
     later = False
     segments = []
@@ -151,6 +151,7 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
         if not kinds or kinds[-1] != kind:
             kinds.append(kind)
         te_c = te[np.searchsorted(te, tc, side="right"):] if later and has_t_eval else te
+        t_before = tc
         w = _jit.clock()
         if kind == "taylor":
             ts_c, ys_c, ns, code, event, tc, yc = _call(
@@ -171,6 +172,11 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
         if ns > 0:  # aim at _CHUNK_SECONDS per chunk
             chunk[kind] = int(min(max(chunk[kind] * _CHUNK_SECONDS / max(w, 1e-6), 10),
                                   1_000_000))
+            if kind == "taylor" and progress is not None and tc > t_before:
+                # the Taylor kernel does not pause at the marks: chunks of about a
+                # hundredth of the span, so that progress comes as often as with DOP853
+                per = ns * (t1 - t0) / (100.0 * (tc - t_before))
+                chunk[kind] = max(1, min(chunk[kind], int(per) + 1))
         n_steps += ns
         n_rhs += nr
         # without t_eval a later chunk starts with the previous one's last point
@@ -179,7 +185,7 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
         later = True
         t_now = float(ts_c[-1]) if event >= 0 and len(ts_c) else tc
         i_mark, crossed = _advance(marks, i_mark, tc)
-        if progress is not None and (code != _ev.RUNNING or crossed or kind == "taylor"):
+        if progress is not None and (code != _ev.RUNNING or crossed):
             progress(float((t_now - t0) / (t1 - t0)))
         if code != _ev.RUNNING:
             break
