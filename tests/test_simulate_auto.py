@@ -97,13 +97,12 @@ def test_auto_method_table():
         "dop853", 1e-10, 1e-10)
     assert _jit.auto_method("rough", 1e-10, 1e-10, **dict(opts, first_step=True))[0] == \
         "dop853"
-    assert _jit.auto_method("rough", 1e-3, 1e-3, **opts) == ("dop853", 1e-3, 1e-3)
-    assert _jit.auto_method("smooth", 1e-12, 1e-12, **opts)[0] == "dop853"
-    for ground in ("rough", "smooth"):
-        f = _jit.TAYLOR_RANGE[ground][2]
-        m, r, a = _jit.auto_method(ground, 1e-8, 1e-9, **opts)
-        assert m == "auto-taylor" and r == pytest.approx(1e-8 * f)
-        assert a == pytest.approx(1e-9 * f)
+    for tol in (1e-3, 1e-8, 1e-12):
+        assert _jit.auto_method("smooth", tol, tol, **opts) == ("dop853", tol, tol)
+    f = _jit.TAYLOR_RANGE["rough"][2]
+    m, r, a = _jit.auto_method("rough", 1e-8, 1e-9, **opts)
+    assert m == "auto-taylor" and r == pytest.approx(1e-8 * f)
+    assert a == pytest.approx(1e-9 * f)
     # floored at 100 eps (rtol), never looser than asked (atol)
     m, r, a = _jit.auto_method("rough", 1e-12, 1e-20, **opts)
     assert r == floor and a == pytest.approx(1e-20 * _jit.TAYLOR_RANGE["rough"][2])
@@ -115,8 +114,8 @@ def compiled():
 
 
 @pytest.mark.parametrize("ground,h,tols", [
-    ("rough", 0.37, (1e-6, 1e-8, 1e-10)), ("rough", 0.0, (1e-8, 1e-10)),
-    ("smooth", 0.2, (1e-6, 1e-8, 1e-9))])
+    ("rough", 0.37, (1e-4, 1e-6, 1e-8, 1e-10)), ("rough", 0.0, (1e-8, 1e-10)),
+    ("rough", 0.8, (1e-6, 1e-9))])
 def test_auto_with_compiled_code_is_taylor_no_less_accurate_than_dop853(ground, h, tols,
                                                                         compiled):
     # the promise of TAYLOR_RANGE on jobs other than those it was measured on: energy
@@ -143,6 +142,11 @@ def test_auto_without_compiled_code_runs_uncompiled_dop853(monkeypatch):
     assert tr.method == "dop853" and tr.status == "completed"
     tr = rd.simulate(rd.Disk(h=0.2), "rough", (0, 5), Y0, dense_output=True)
     assert tr.method == "dop853" and tr.sol is not None
+
+
+def test_auto_on_smooth_ground_is_dop853(compiled):
+    m = rd.steady_motion(rd.Disk(h=0.2), "smooth", 0.5, Omega0=2.2)
+    assert rd.simulate_steady(m, 5.0, perturb=1e-3).method == "dop853"
 
 
 def test_auto_goes_on_with_taylor_once_the_code_is_loaded(compiled, monkeypatch):

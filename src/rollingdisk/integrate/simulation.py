@@ -211,10 +211,9 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
         ``"auto"`` (default): the fastest method the process has for the tolerance at
         equal accuracy (:func:`rollingdisk.integrate.jit.auto_method`; docs/simulation.md
         has the measured table): ``"scipy"`` with user ``events``, ``"dop853"`` with
-        ``dense_output`` or ``first_step``, above a tolerance of 3e-5, or below 3e-10 on
-        smooth ground; otherwise the compiled Taylor method at ``1e-3`` (rough) or
-        ``3e-4`` (smooth) times ``rtol`` and ``atol`` (its energy drift there is no larger
-        than DOP853's at the tolerance asked for), which starts as
+        ``dense_output`` or ``first_step`` or on smooth ground; otherwise the compiled
+        Taylor method at ``1e-3`` times ``rtol`` and ``atol`` (its energy drift there is no
+        larger than DOP853's at the tolerance asked for), which starts as
         uncompiled DOP853 while the process has no compiled code (``traj.method`` then
         says ``"dop853"`` or ``"dop853+taylor"``).
         ``"dop853"``: rollingdisk's DOP853, uncompiled until the process has spent
