@@ -13,13 +13,16 @@ process, for T = 1000 and T = 300.  Each process is started with
 Each run is timed from outside (``time.perf_counter`` around ``simulate``: loading, and
 waiting if any, included).  After the loop the process calls ``jit_compile()`` and times
 the same run ``--runs-compiled`` times: the compiled time, against which the loop is
-compared.  Printed: the first run, the second, the mean and median of runs 2..N, the mean
+compared; with ``--per-run`` also a warm process under the rule before issue 23 (the
+uncompiled seconds counted per run: the counter reset before each), labelled ``old``.
+Printed: the first run, the second, the mean and median of runs 2..N, the mean
 of all N, the compiled median, the ratio mean(2..N) / compiled, and which methods ran.
 
 ``--tol 1e-10`` gives the issue's own example (0.3 s per run uncompiled at T = 1000, so
 that no single run reaches the budget).
 
 Run:  python benchmarks/medium_runs.py [--runs 100] [--T 1000 300] [--tol 1e-10] [--no-cold]
+      [--per-run]
 """
 
 from __future__ import annotations
@@ -40,18 +43,21 @@ import rollingdisk as rd
 
 T, runs, runs_c = float(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3])
 opts = json.loads(sys.argv[4])
+per_run = sys.argv[5] == "per-run"
+from rollingdisk.integrate import jit
 disk = rd.Disk(h=0.37)
 m = rd.steady_motion(disk, "rough", 0.3, Omega0=3.0)
 y0 = np.array(m.initial_state(0.0, 0.0), dtype=float)
 y0[3] += 1e-4
 walls, methods = [], []
 for _ in range(runs):
+    if per_run:
+        jit._py_seconds = 0.0  # the rule before issue 23: a budget per run
     t = time.perf_counter()
     tr = rd.simulate(disk, "rough", (0.0, T), y0, **opts)
     walls.append(time.perf_counter() - t)
     methods.append(tr.method)
     assert tr.status == "completed", tr.message
-from rollingdisk.integrate import jit
 jit.wait_ready(900)  # a background compiler still at work (cold cache): let it finish
 rd.jit_compile()
 comp = []
@@ -64,13 +70,13 @@ print(json.dumps({"walls": walls, "methods": methods, "compiled": comp,
 """
 
 
-def child(T, runs, runs_c, cache, opts):
+def child(T, runs, runs_c, cache, opts, rule="total"):
     env = dict(os.environ, NUMBA_CACHE_DIR=cache)
     src = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "src")
     env["PYTHONPATH"] = src + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
     t = time.perf_counter()
     out = subprocess.run([sys.executable, "-c", CHILD, str(T), str(runs), str(runs_c),
-                          json.dumps(opts)],
+                          json.dumps(opts), rule],
                          env=env, capture_output=True, text=True, check=True)
     res = json.loads(out.stdout.strip().splitlines()[-1])
     res["process"] = time.perf_counter() - t
@@ -102,6 +108,8 @@ def main(argv=None) -> int:
     ap.add_argument("--runs-compiled", type=int, default=20)
     ap.add_argument("--T", type=float, nargs="+", default=[1000.0, 300.0])
     ap.add_argument("--no-cold", action="store_true", help="only the warm cache")
+    ap.add_argument("--per-run", action="store_true",
+                    help="also the rule before issue 23 (the budget counted per run), warm")
     ap.add_argument("--tol", type=float, default=None,
                     help="rtol = atol (default: simulate's defaults, 1e-11 and 1e-12)")
     args = ap.parse_args(argv)
@@ -123,6 +131,9 @@ def main(argv=None) -> int:
                     time.sleep(0.5)
                     # the background compiler, if still at work, ends with the folder
             report("warm", T, child(T, args.runs, args.runs_compiled, warm, opts))
+            if args.per_run:
+                report("old", T, child(T, args.runs, args.runs_compiled, warm, opts,
+                                       "per-run"))
     return 0
 
 
