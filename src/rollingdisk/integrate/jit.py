@@ -305,9 +305,11 @@ def jit_compile() -> float:
     run this is the time to load it.  A cache left stale by an edit of the kernels in
     :mod:`rollingdisk.model.equations` (eqs. 11, 38, 49) is detected and recompiled.
     :func:`simulate` does not need it: it starts uncompiled and loads the compiled code
-    once a run is long enough to be worth it, filling a cold cache in a background
-    process meanwhile (:mod:`rollingdisk.integrate.jit`).  Call it to compile (or load) up front,
-    e.g. before timing runs: every later run is compiled from its first step.
+    once the process has integrated uncompiled for ``PY_BUDGET`` seconds in total, filling
+    a cold cache in a background process meanwhile (:mod:`rollingdisk.integrate.jit`).
+    Call it to compile (or load) up front, e.g. before timing runs: every later run is
+    compiled from its first step (and ``method="auto"`` is the Taylor method on rough
+    ground).
 
     Returns
     -------
