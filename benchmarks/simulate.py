@@ -1,4 +1,4 @@
-"""Benchmark: rollingdisk.simulate (compiled DOP853, Taylor) against solve_ivp and heyoka.
+"""Benchmark: rollingdisk.simulate (compiled DOP853, Taylor, auto) against solve_ivp and heyoka.
 
 One job, the same for both: a rough-ground disk (h = 0.1) on a steady circle
 (theta0 = 0.3, omega30 = 3, omega20 from d omega1/dt = 0, eq. 38) with theta(0) perturbed by
@@ -9,7 +9,8 @@ evaluations/s and relative energy drift of each, and their ratio, and the cost o
 guards (located on the dense output inside every step where they may reach 0) against a run
 without them.  The JIT compile time is measured apart: cold (empty numba cache, in a
 subprocess) and warm (loading the cache); and the same integrator uncompiled (the path a
-short run takes).
+short run takes).  Then ``method="auto"`` (the default) against the best method at equal
+energy drift at tolerances 1e-8, 1e-10 and 1e-12 (``--repeat-auto`` rounds).
 
 Then, if heyoka (a Taylor integrator, PyPI) is importable, the side-by-side at equal energy
 drift: heyoka's ODE is built from the very kernels of rollingdisk.model.equations (their ``np``
@@ -19,7 +20,8 @@ each with ``error_control="reduced"`` and ``"full"``) with a drift no larger is 
 both are timed alternately, ``--repeat-hy`` pairs; the median of the per-pair ratios and
 their range are printed.
 
-Run:  python benchmarks/simulate.py [--T 1000] [--repeat 3] [--repeat-hy 15] [--no-cold]
+Run:  python benchmarks/simulate.py [--T 1000] [--repeat 3] [--repeat-hy 15] [--repeat-auto 15]
+      [--no-cold]
 """
 
 from __future__ import annotations
@@ -63,6 +65,7 @@ def main(argv=None) -> int:
     ap.add_argument("--T", type=float, default=1000.0)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--repeat-hy", type=int, default=15)
+    ap.add_argument("--repeat-auto", type=int, default=15)
     ap.add_argument("--no-cold", action="store_true", help="skip the cold-compile measurement")
     args = ap.parse_args(argv)
     rtol = atol = 1e-10
@@ -76,14 +79,14 @@ def main(argv=None) -> int:
     # compiled integrator: best of --repeat (the compiled code is already loaded)
     best = None
     for _ in range(args.repeat):
-        tr = simulate(disk, "rough", (0.0, args.T), y0, rtol=rtol, atol=atol)
+        tr = simulate(disk, "rough", (0.0, args.T), y0, rtol=rtol, atol=atol, method="dop853")
         if best is None or tr.wall_time < best.wall_time:
             best = tr
     sim_wall = best.wall_time
     sim_drift = energy_drift(best)
     # the cost of locating the guards on the dense output inside every step
     blind = min((simulate(disk, "rough", (0.0, args.T), y0, rtol=rtol, atol=atol,
-                          guards=False) for _ in range(args.repeat)),
+                          guards=False, method="dop853") for _ in range(args.repeat)),
                 key=lambda tr: tr.wall_time)
 
     # baseline: scipy DOP853 on the numpy right-hand side
@@ -122,6 +125,7 @@ def main(argv=None) -> int:
     ok = base_wall / sim_wall >= 5 and sim_drift <= base_drift * (1 + 1e-6) + 1e-15
     print("target (>= 5x at equal or better energy drift):", "met" if ok else "NOT met")
     uncompiled(disk, y0, args.T, rtol)
+    auto_table(disk, y0, args.T, args.repeat_auto)
     versus_heyoka(disk, y0, args.T, args.repeat_hy)
     return 0
 
@@ -135,11 +139,57 @@ def uncompiled(disk, y0, T, rtol):
     _simulate._core, _jit.PY_BUDGET = None, float("inf")
     try:
         T = min(T, 100.0)
-        tr = simulate(disk, "rough", (0.0, T), y0, rtol=rtol, atol=rtol)
+        tr = simulate(disk, "rough", (0.0, T), y0, rtol=rtol, atol=rtol, method="dop853")
     finally:
         _simulate._core, _jit.PY_BUDGET = core, budget
     print(f"uncompiled (CPython), T = {T:g}: {tr.wall_time:.3f} s, {tr.n_steps} steps, "
           f"{tr.n_steps / tr.wall_time:.3g} steps/s")
+
+
+def auto_table(disk, y0, T, repeat):
+    """``method="auto"`` against the best method at equal energy drift, at 1e-8, 1e-10,
+    1e-12: DOP853 at the tolerance (its drift is the mark), the Taylor method at the
+    loosest tolerance of a grid (quarter decades) whose drift is no larger, and auto at the
+    tolerance; drift = max over 20001 points; wall times the best of ``repeat`` rounds
+    taken in turn (compiled code loaded; on a shared machine a round preempted by another
+    process costs a whole time slice, 4 ms here, so the median of a few is noise)."""
+    grid = np.linspace(0.0, T, 20001)
+    tols = [10.0 ** (-6 - k / 4) for k in range(0, 32)]  # down to 1.8e-14 (>= 100 eps)
+    tols = [t for t in tols if t >= 100 * np.finfo(float).eps]
+
+    def drift(tol, method):
+        tr = simulate(disk, "rough", (0.0, T), y0, rtol=tol, atol=tol, t_eval=grid,
+                      method=method)
+        return grid_drift(disk, tr.y), tr.method
+
+    print(f"\nmethod='auto' at equal energy drift (max over {grid.size} points), best of "
+          f"{repeat} rounds:")
+    print(f"{'tol':>6s}  {'dop853 drift':>12s}{'[ms]':>7s}   {'taylor tol':>10s}{'drift':>9s}"
+          f"{'[ms]':>7s}   {'auto runs':>9s}{'drift':>9s}{'[ms]':>7s}  {'best':>6s}"
+          f"{'auto/best':>10s}")
+    worst = 0.0
+    for tol in (1e-8, 1e-10, 1e-12):
+        d_dop, _ = drift(tol, "dop853")
+        t_tay = next((t for t in tols if drift(t, "taylor")[0] <= d_dop), None)
+        d_tay = drift(t_tay, "taylor")[0] if t_tay else float("nan")
+        d_auto, m_auto = drift(tol, "auto")
+        runs = {"dop853": (tol, "dop853"), "auto": (tol, "auto")}
+        if t_tay:
+            runs["taylor"] = (t_tay, "taylor")
+        walls = {k: [] for k in runs}
+        for _ in range(repeat):
+            for k, (t, m) in runs.items():
+                walls[k].append(simulate(disk, "rough", (0.0, T), y0, rtol=t, atol=t,
+                                         method=m).wall_time)
+        med = {k: 1e3 * min(v) for k, v in walls.items()}
+        best = min((k for k in med if k != "auto"), key=med.get)
+        ratio = med["auto"] / med[best]
+        worst = max(worst, ratio)
+        print(f"{tol:6.0e}  {d_dop:12.2e}{med['dop853']:7.2f}   "
+              f"{t_tay or float('nan'):10.2e}{d_tay:9.2e}{med.get('taylor', float('nan')):7.2f}"
+              f"   {m_auto:>9s}{d_auto:9.2e}{med['auto']:7.2f}  {best:>6s}{ratio:10.2f}")
+    print(f"auto within {worst:.2f}x of the best method at equal drift (target <= 1.2: "
+          f"{'met' if worst <= 1.2 else 'NOT met'})")
 
 
 def heyoka_system(disk):

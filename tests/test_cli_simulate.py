@@ -34,7 +34,8 @@ def test_json_from_an_arbitrary_state(capsys):
         assert key in rec
     assert rec["status"] == "completed" and rec["t_end"] == 20.0
     assert rec["varpi"] is None  # no steady motion to predict from
-    tr = simulate(Disk(h=0.1), "rough", (0, 20), [0, 0, 0, 0.3, 0, 0, 2.0, 0.5])
+    tr = simulate(Disk(h=0.1), "rough", (0, 20), [0, 0, 0, 0.3, 0, 0, 2.0, 0.5],
+                  method="dop853")  # the CLI's default
     assert rec["n_steps"] == tr.n_steps
     assert rec["energy_drift"] == pytest.approx(energy_drift(tr), rel=1e-6, abs=1e-15)
     assert rec["theta_min"] == pytest.approx(tr.theta.min())
@@ -68,7 +69,8 @@ def test_csv_output(tmp_path, capsys):
     assert rows[0] == COLUMNS
     data = np.array(rows[1:], dtype=float)
     # without --json the run reports progress; it takes the steps of a plain run all the same
-    tr = simulate(Disk(h=0.1), "rough", (0, 5), [0, 0, 0, 0.3, 0, 0, 2.0, 0.5])
+    tr = simulate(Disk(h=0.1), "rough", (0, 5), [0, 0, 0, 0.3, 0, 0, 2.0, 0.5],
+                  method="dop853")  # the CLI's default
     assert data.shape == (tr.t.size, len(COLUMNS))
     np.testing.assert_allclose(data[:, COLUMNS.index("F_z")], tr.F_z, rtol=1e-8, atol=1e-10)
     np.testing.assert_allclose(data[:, -1], tr.E, rtol=1e-12)
@@ -210,7 +212,8 @@ def test_simulate_out_streams_the_same_csv_as_the_trajectory(tmp_path, capsys):
     rows = np.loadtxt(path, delimiter=",", skiprows=1)
     from rollingdisk import simulate_steady, steady_motion
 
-    tr = simulate_steady(steady_motion(Disk(h=0.1), "rough", 0.3, Omega0=3.0), 5.0)
+    tr = simulate_steady(steady_motion(Disk(h=0.1), "rough", 0.3, Omega0=3.0), 5.0,
+                         method="dop853")  # the CLI's default
     assert np.array_equal(rows[:, 0], tr.t)
     assert oct(path.stat().st_mode & 0o777) == oct(0o666 & ~_umask())
 

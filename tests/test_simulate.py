@@ -147,7 +147,7 @@ def test_growth_rate_of_unstable_motion_is_sqrt_minus_varpi2(motion):
     circle("smooth", 0.3, 0.8, 0.5), circle("smooth", 2.0, 0.3, 4.0)],
     ids=lambda m: f"{m.ground}-{m.h}-{m.theta0}-{m.omega30}")
 def test_unperturbed_steady_motion_stays_steady_on_circles(motion):
-    tr = simulate_steady(motion, 100.0, psi0=0.4)
+    tr = simulate_steady(motion, 100.0, psi0=0.4, method="dop853")
     assert tr.status == "completed"
     assert np.max(np.abs(tr.theta - motion.theta0)) < 1e-9
     # expected radii from kinematics (eqs. 3, 4, 24, 37), not from the steady module
@@ -278,14 +278,14 @@ def test_t_eval_output_is_the_dense_output_of_scipys_dop853():
     disk = Disk(h=0.2)
     y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
     te = np.linspace(0, 100, 2001)
-    a = simulate(disk, "rough", (0, 100), y0, t_eval=te)
+    a = simulate(disk, "rough", (0, 100), y0, t_eval=te, method="dop853")
     ref = solve_ivp(equations_of_motion(disk, "rough"), (0, 100), y0, method="DOP853",
                     rtol=DEFAULT_RTOL, atol=DEFAULT_ATOL, t_eval=te)
     np.testing.assert_array_equal(a.t, te)
     scale = np.max(np.abs(ref.y), axis=1, keepdims=True)
     assert np.max(np.abs(a.y - ref.y) / scale) < 1e-11
     # dense output: 3 evaluations per step, not a 12-stage step per requested time
-    b = simulate(disk, "rough", (0, 100), y0)
+    b = simulate(disk, "rough", (0, 100), y0, method="dop853")
     assert a.n_steps == b.n_steps
     assert a.n_rhs <= b.n_rhs + 3 * b.n_steps < b.n_rhs + 12 * te.size
 
@@ -422,7 +422,7 @@ def test_oscillation_frequency_none_without_oscillation():
 # ---------------------------------------------------------------------------- the result
 def test_trajectory_is_frozen_and_named():
     y0 = [0, 0, 0, 0.3, 0, 0.1, 2.0, 0.5]
-    tr = simulate(Disk(h=0.1), "rough", (0, 1), y0)
+    tr = simulate(Disk(h=0.1), "rough", (0, 1), y0, method="dop853")
     assert isinstance(tr, Trajectory)
     with pytest.raises(AttributeError):
         tr.status = "x"
@@ -601,12 +601,12 @@ def test_simulation_confirms_the_stability_module(row):
         assert oscillation_frequency(tr) == pytest.approx(st.varpi, rel=1e-6)
     else:
         lam = st.growth_rate
-        tr = simulate_steady(m, 25 / lam, perturb=1e-12, atol=1e-16)
+        tr = simulate_steady(m, 25 / lam, perturb=1e-12, atol=1e-16, method="dop853")
         assert growth_rate(tr) == pytest.approx(lam, rel=1e-3)
     if not st.stable:
         return  # round-off grows on an unstable one
     # unperturbed: it stays on its steady motion; P on its circle of radius |r_P|
-    tr0 = simulate_steady(m, 20.0)
+    tr0 = simulate_steady(m, 20.0, method="dop853")
     assert np.max(np.abs(tr0.theta - m.theta0)) < 1e-9
     if kind != "omega0":
         assert fit_circle(tr0.X_P, tr0.Y_P)[2] == pytest.approx(abs(m.r_P), rel=1e-8,

@@ -49,11 +49,11 @@ def test_uncompiled_run_takes_the_steps_of_the_compiled_one(ground, h, y0, event
                                                              monkeypatch):
     disk = Disk(h=h)
     te = np.linspace(0, 3, 31)
-    ref = simulate(disk, ground, (0, 20), y0)
+    ref = simulate(disk, ground, (0, 20), y0, method="dop853")
     ref_te = simulate(disk, ground, (0, 3), y0, t_eval=te, dense_output=True)
     monkeypatch.setattr(_simulate, "_core", None)
     monkeypatch.setattr(_jit, "PY_BUDGET", math.inf)
-    tr = simulate(disk, ground, (0, 20), y0)
+    tr = simulate(disk, ground, (0, 20), y0, method="dop853")
     tr_te = simulate(disk, ground, (0, 3), y0, t_eval=te, dense_output=True)
     assert tr.status == ref.status == (event or "completed")
     # the same steps up to round-off in the error estimate; the last few steps before an
@@ -78,9 +78,10 @@ def test_lift_off_inside_one_step_is_found_uncompiled(uncompiled):
 def test_a_run_switches_to_compiled_code_without_changing_its_steps(monkeypatch):
     disk = Disk(h=0.2)
     y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
-    plain = simulate(disk, "rough", (0, 200), y0, progress=lambda f: None)
+    plain = simulate(disk, "rough", (0, 200), y0, progress=lambda f: None, method="dop853")
     monkeypatch.setattr(_simulate, "_core", None)
     monkeypatch.setattr(_jit, "PY_BUDGET", 0.05)
+    monkeypatch.setattr(_jit, "_py_seconds", 0.0)  # a fresh process
     monkeypatch.setattr(_jit, "ready", lambda: True)
     used = []
     real = _simulate.jit_compile
@@ -90,7 +91,7 @@ def test_a_run_switches_to_compiled_code_without_changing_its_steps(monkeypatch)
         return real()
 
     monkeypatch.setattr(_simulate, "jit_compile", spy)
-    tr = simulate(disk, "rough", (0, 200), y0, progress=lambda f: None)
+    tr = simulate(disk, "rough", (0, 200), y0, progress=lambda f: None, method="dop853")
     assert used, "the run never switched to compiled code"
     assert tr.status == plain.status == "completed"
     assert abs(tr.n_steps - plain.n_steps) <= 1
@@ -161,7 +162,7 @@ def test_reduced_error_control_keeps_positions_and_energy(ground, h):
     m = steady_motion(Disk(h=h), ground, 0.4, Omega0=2.5)
     y0 = np.array(m.initial_state(0.0, 0.0), dtype=float)
     y0[3 if ground == "rough" else 5] += 1e-4
-    full = simulate(m.disk, ground, (0, 100), y0)
+    full = simulate(m.disk, ground, (0, 100), y0, method="dop853")
     for method in ("dop853", "scipy"):
         red = simulate(m.disk, ground, (0, 100), y0, error_control="reduced", method=method)
         assert red.status == "completed"
@@ -170,7 +171,7 @@ def test_reduced_error_control_keeps_positions_and_energy(ground, h):
         # positions and angles agree with the full-state run to the 1e-8 the tests ask
         np.testing.assert_allclose(red.y[:, -1], full.y[:, -1], rtol=1e-8, atol=1e-8)
     a = simulate(m.disk, ground, (0, 100), y0, error_control="reduced", rtol=1e-10,
-                 atol=1e-10)
+                 atol=1e-10, method="dop853")
     b = simulate(m.disk, ground, (0, 100), y0, error_control="reduced", rtol=1e-10,
                  atol=1e-10, method="scipy")
     assert abs(a.n_steps - b.n_steps) <= 1  # both methods: the same control
@@ -194,9 +195,9 @@ def test_uncompiled_run_falls_back_to_ieee_arithmetic(uncompiled, monkeypatch):
 
     monkeypatch.setattr(_pycore, "_integrate_fast", failing)
     y0 = [0, 0, 0, 0.3, 0, 0, 2.0, 0.5]
-    tr = simulate(Disk(h=0.1), "rough", (0, 5), y0)
+    tr = simulate(Disk(h=0.1), "rough", (0, 5), y0, method="dop853")
     monkeypatch.undo()
-    ref = simulate(Disk(h=0.1), "rough", (0, 5), y0)
+    ref = simulate(Disk(h=0.1), "rough", (0, 5), y0, method="dop853")
     assert calls and tr.status == "completed"
     assert abs(tr.n_steps - ref.n_steps) <= 1
     np.testing.assert_allclose(tr.y[:, -1], ref.y[:, -1], rtol=1e-9, atol=1e-9)

@@ -5,9 +5,10 @@
 ``progress`` is called, the step budget is kept and ``KeyboardInterrupt`` or ``Terminated``
 (SIGTERM) surfaces between chunks.  Each chunk runs compiled
 (:mod:`rollingdisk.integrate.numba_core`)
-or uncompiled (:mod:`rollingdisk.integrate.pycore`), as :mod:`rollingdisk.integrate.jit` decides: a
-run starts
-uncompiled unless the compiled code is already loaded, and switches between chunks.
+or uncompiled (:mod:`rollingdisk.integrate.pycore`), as :mod:`rollingdisk.integrate.jit` decides
+(uncompiled until the process has spent ``PY_BUDGET`` seconds uncompiled over all its runs,
+then loaded, switching between chunks); ``method="taylor"`` and ``"auto"`` run the Taylor
+method of :mod:`rollingdisk.integrate.taylor` through the same loop.
 :func:`run_scipy` steps scipy's own
 ``DOP853`` one step at a time and does the same in Python.  Both sample the guards of
 :mod:`rollingdisk.integrate.events` on the dense output inside every step (at ``j / 8`` of it) and
@@ -99,32 +100,20 @@ def _dense_solution(segments, t_end):
     return OdeSolution(ts, pieces)
 
 
-def _pick_core(state, elapsed, fraction):
-    """The integrator to run the next chunk with: the compiled one if it is loaded, or once
-    the run has spent ``_jit.PY_BUDGET`` seconds uncompiled and the cache is ready (loading
-    it then); else the uncompiled one, after starting a background compile of a cold
-    cache.  A run far from done on a machine with no idle core waits for that compiler
-    rather than slow it down (``_jit.worth_waiting``)."""
-    if _jit._core is not None:
-        return _jit._core, True
-    if elapsed >= _jit.PY_BUDGET:
-        if not _jit.ready() and not state.get("spawned"):
-            state["spawned"] = True
-            _jit.start_background_compile()
-        elif (not _jit.ready() and not state.get("waited")
-              and _jit.worth_waiting(elapsed, fraction)):
-            state["waited"] = True
-            _jit.wait_ready()
-        if _jit.ready():
-            _jit.jit_compile()  # loads from the on-disk cache
-            return _jit._core, True
-    from rollingdisk.integrate import pycore as _pycore
-
-    return _pycore, False
-
-
 def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_eval,
-                 dense_output, events, guards, max_steps, progress, out, finish):
+                 dense_output, events, guards, max_steps, progress, out, finish,
+                 mode="dop853", taylor_tol=None):
+    """rollingdisk's DOP853 and Taylor method, in chunks of about ``_CHUNK_SECONDS``.
+
+    ``mode``: ``"dop853"`` (each chunk compiled or uncompiled as
+    :func:`rollingdisk.integrate.jit.pick_core` decides), ``"taylor"`` (compiled or loaded
+    first, as :func:`jit_compile`) or ``"auto-taylor"`` (DOP853 as ``"dop853"`` while the
+    process has no compiled code, the Taylor method at ``taylor_tol = (rtol, atol)`` from
+    the chunk on which it has).  The uncompiled seconds are counted against the process's
+    budget (:func:`rollingdisk.integrate.jit.spend`).
+    """
+    from rollingdisk.integrate import taylor as _taylor
+
     rough = ground == "rough"
     use = np.zeros(3, dtype=np.bool_)
     for g in guards:
@@ -132,6 +121,15 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
     theta0 = y[state_index(ground, "theta")]
     side = 1.0 if theta0 >= 0 else -1.0
     atolv = np.broadcast_to(np.asarray(atol, dtype=float), y.shape).copy()
+    if mode == "taylor":
+        taylor_tol = (rtol, atol)
+        _jit.jit_compile()
+    if taylor_tol is not None:
+        t_rtol = taylor_tol[0]
+        t_atolv = np.broadcast_to(np.asarray(taylor_tol[1], dtype=float), y.shape).copy()
+        finite = t_atolv[np.isfinite(t_atolv)]
+        order = _taylor.taylor_order(min(t_rtol, float(finite.min()) if finite.size
+                                         else t_rtol))
     has_t_eval = t_eval is not None
     te = t_eval if has_t_eval else np.zeros(1)
     marks = _marks(t0, t1, progress)
@@ -140,30 +138,51 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
     n_steps = n_rhs = 0
     h_next = 0.0 if first_step is None else first_step
     tc, yc = t0, y
-    chunk = {True: 2000, False: 50}
+    chunk = {"compiled": 2000, "uncompiled": 50, "taylor": 2000 if progress is None else 10}
     state = {}
     later = False
     segments = []
+    kinds = []
     while True:
-        core, compiled = _pick_core(state, time.perf_counter() - start, (tc - t0) / (t1 - t0))
+        core, compiled = _jit.pick_core(state, time.perf_counter() - start,
+                                        (tc - t0) / (t1 - t0))
+        kind = ("taylor" if compiled and taylor_tol is not None
+                else "compiled" if compiled else "uncompiled")
+        if not kinds or kinds[-1] != kind:
+            kinds.append(kind)
         te_c = te[np.searchsorted(te, tc, side="right"):] if later and has_t_eval else te
-        w = time.perf_counter()
-        args = (rough, disk.h, tc, yc, t1, marks[i_mark], rtol, atolv, max_step, h_next, use,
-                side, te_c, has_t_eval, max_steps - n_steps, chunk[compiled], dense_output)
-        (ts_c, ys_c, ns, nr, code, event, h_next, tc, yc, st, sdt, sy, sF) = (
-            _call(core.integrate, *args) if compiled else core.integrate(*args))
-        w = time.perf_counter() - w
+        t_before = tc
+        w = _jit.clock()
+        if kind == "taylor":
+            ts_c, ys_c, ns, code, event, tc, yc = _call(
+                core._tay_integrate, rough, disk.h, tc, yc, t1, t_rtol, t_atolv, max_step,
+                use, side, te_c, has_t_eval, max_steps - n_steps, chunk[kind], order)
+            nr = ns  # one series per step
+        else:
+            args = (rough, disk.h, tc, yc, t1, marks[i_mark], rtol, atolv, max_step, h_next,
+                    use, side, te_c, has_t_eval, max_steps - n_steps, chunk[kind],
+                    dense_output)
+            (ts_c, ys_c, ns, nr, code, event, h_next, tc, yc, st, sdt, sy, sF) = (
+                _call(core.integrate, *args) if compiled else core.integrate(*args))
+            if dense_output:
+                segments.extend(zip(st, sdt, sy, sF))
+        w = _jit.clock() - w
+        if not compiled:
+            _jit.spend(w)
         if ns > 0:  # aim at _CHUNK_SECONDS per chunk
-            chunk[compiled] = int(min(max(chunk[compiled] * _CHUNK_SECONDS / max(w, 1e-6),
-                                          10), 1_000_000))
+            chunk[kind] = int(min(max(chunk[kind] * _CHUNK_SECONDS / max(w, 1e-6), 10),
+                                  1_000_000))
+            if kind == "taylor" and progress is not None and tc > t_before:
+                # the Taylor kernel does not pause at the marks: chunks of about a
+                # hundredth of the span, so that progress comes as often as with DOP853
+                per = ns * (t1 - t0) / (100.0 * (tc - t_before))
+                chunk[kind] = max(1, min(chunk[kind], int(per) + 1))
         n_steps += ns
         n_rhs += nr
         # without t_eval a later chunk starts with the previous one's last point
         skip = 1 if later and not has_t_eval else 0
         out.add(ts_c[skip:], ys_c[skip:])
         later = True
-        if dense_output:
-            segments.extend(zip(st, sdt, sy, sF))
         t_now = float(ts_c[-1]) if event >= 0 and len(ts_c) else tc
         i_mark, crossed = _advance(marks, i_mark, tc)
         if progress is not None and (code != _ev.RUNNING or crossed):
@@ -172,55 +191,16 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
             break
     wall = time.perf_counter() - start
     sol = _dense_solution(segments, t_now) if dense_output else None
-    return finish(disk, ground, "dop853", out, code, t_now, n_steps, n_rhs, wall,
+    method = "+".join(dict.fromkeys("taylor" if k == "taylor" else "dop853" for k in kinds))
+    return finish(disk, ground, method, out, code, t_now, n_steps, n_rhs, wall,
                   max_steps, t1, sol=sol)
 
 
-def run_taylor(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_eval,
-               dense_output, events, guards, max_steps, progress, out, finish):
+def run_taylor(disk, ground, y, t0, t1, **options):
     """``simulate(method="taylor")``: the compiled Taylor integrator of
-    :mod:`rollingdisk.integrate.taylor` (compiled or loaded first, as :func:`jit_compile`), run in
-    chunks of about ``_CHUNK_SECONDS`` so that progress and signals come through."""
-    from rollingdisk.integrate import taylor as _taylor
-
-    _jit.jit_compile()
-    core = _jit._core
-    rough = ground == "rough"
-    use = np.zeros(3, dtype=np.bool_)
-    for g in guards:
-        use[g.index] = True
-    side = 1.0 if y[state_index(ground, "theta")] >= 0 else -1.0
-    atolv = np.broadcast_to(np.asarray(atol, dtype=float), y.shape).copy()
-    finite = atolv[np.isfinite(atolv)]
-    order = _taylor.taylor_order(min(rtol, float(finite.min()) if finite.size else rtol))
-    has_t_eval = t_eval is not None
-    te = t_eval if has_t_eval else np.zeros(1)
-    start = time.perf_counter()
-    n_steps = 0
-    tc, yc = t0, y
-    chunk = 2000
-    later = False
-    while True:
-        te_c = te[np.searchsorted(te, tc, side="right"):] if later and has_t_eval else te
-        w = time.perf_counter()
-        ts_c, ys_c, ns, code, event, tc, yc = _call(
-            core._tay_integrate, rough, disk.h, tc, yc, t1, rtol, atolv, max_step, use, side,
-            te_c, has_t_eval, max_steps - n_steps, chunk, order)
-        w = time.perf_counter() - w
-        if ns > 0:
-            chunk = int(min(max(chunk * _CHUNK_SECONDS / max(w, 1e-6), 10), 1_000_000))
-        n_steps += ns
-        out.add(ts_c[1 if later and not has_t_eval else 0:], ys_c[1 if later and not
-                                                                   has_t_eval else 0:])
-        later = True
-        t_now = float(ts_c[-1]) if event >= 0 and len(ts_c) else tc
-        if progress is not None:
-            progress(float((t_now - t0) / (t1 - t0)))
-        if code != _ev.RUNNING:
-            break
-    wall = time.perf_counter() - start
-    return finish(disk, ground, "taylor", out, code, t_now, n_steps, n_steps, wall,
-                  max_steps, t1, sol=None)
+    :mod:`rollingdisk.integrate.taylor` (compiled or loaded first, as :func:`jit_compile`),
+    run in chunks of about ``_CHUNK_SECONDS`` so that progress and signals come through."""
+    return run_compiled(disk, ground, y, t0, t1, mode="taylor", **options)
 
 
 class _LazyDense:

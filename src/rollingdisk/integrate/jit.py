@@ -1,20 +1,39 @@
-"""When the compiled integrator is worth loading, and filling a cold compile cache.
+"""When the compiled integrator is worth loading, which method ``"auto"`` runs, and filling a
+cold compile cache.
 
 Loading the numba integrator costs about 0.5 s (``import numba`` and the cached machine
-code), compiling it with an empty cache 10-20 s; the same integrator run uncompiled
-(:mod:`rollingdisk.integrate.pycore`) takes about 30 times as long per step as compiled.  So
-:func:`rollingdisk.simulate` starts every run uncompiled and
+code), compiling it with an empty cache 10-50 s; the same integrator run uncompiled
+(:mod:`rollingdisk.integrate.pycore`) takes 30-65 times as long per step as compiled.  The
+rule (the one place it is written; docs/simulation.md quotes it):
 
-* if the compiled code is already loaded in this process, uses it from the start;
-* if the run is not done after :data:`PY_BUDGET` seconds and the on-disk cache is ready,
-  loads the compiled code (0.5 s) and continues with it (the very same steps: the run
-  pauses and resumes);
-* if the cache is cold, starts :func:`start_background_compile`: a detached process that
-  compiles and fills the on-disk cache, then marks it ready; the run goes on
-  uncompiled and switches once the mark appears.  A short or medium run never waits for a
-  compiler; a run that would need more than :data:`COMPILE_GUESS` seconds more
-  uncompiled on a machine with no idle core waits for the compiler instead of competing
-  with it for the CPU (:func:`worth_waiting`): then it costs what compiling first did.
+* The process counts the seconds it has spent integrating uncompiled, over all its runs
+  (:func:`py_seconds`).  While the count is under :data:`PY_BUDGET` (0.4 s) a run goes
+  uncompiled: a short script, or the first medium run of one, never pays for ``import
+  numba``.
+* Once the count reaches :data:`PY_BUDGET` in total (not per run) and the on-disk cache is
+  ready, the process loads the compiled code (0.5 s) at the next chunk boundary of the
+  run under way (the very same steps: the run pauses and resumes) and every later run is
+  compiled from its first step.  A loop of medium runs (0.3 s each uncompiled) is thus
+  compiled from the second run on, where before each run started uncompiled again and,
+  never reaching the budget on its own, stayed uncompiled.
+* If the cache is cold when the count reaches the budget, :func:`start_background_compile`
+  starts (once per process) a detached process that compiles and fills the on-disk cache,
+  then marks it ready; runs go on uncompiled and switch once the mark appears.  A run
+  never waits for a compiler, except a run that would need more than
+  :data:`COMPILE_GUESS` seconds more uncompiled on a machine with no idle core
+  (:func:`worth_waiting`): it waits instead of competing with the compiler for the CPU.
+* If the compiled code is loaded (an earlier run, or :func:`jit_compile`), every run uses
+  it from the start.
+
+``simulate(method="auto")`` (the default) asks :func:`auto_method` which method the process
+has that is fastest for the tolerance, at equal accuracy (energy drift): user events need
+scipy's solver, ``dense_output`` and ``first_step`` DOP853; otherwise, on rough ground
+(:data:`TAYLOR_RANGE`), the compiled Taylor method at 1e-3 times the tolerance, where its
+drift is no larger than DOP853's at the one asked for (and 1.3-9 times as fast), and
+DOP853 on smooth ground.  While the process has
+no compiled code, the Taylor part starts as uncompiled DOP853 (the Taylor method exists
+only compiled) and goes on with the Taylor method from the chunk at which the compiled
+code is loaded.
 
 The mark is a file named after the sources (path, size and modification time of
 ``_dop853.py``, ``equations.py``, ``_numba_core.py`` and numba's own ``__init__.py``) and
@@ -37,9 +56,28 @@ from pathlib import Path
 
 import numpy as np
 
-#: Seconds of uncompiled integration after which a run switches to the compiled code
-#: (about what loading it costs, so a run never pays more than twice the best choice).
+#: Seconds of uncompiled integration, in total over the runs of the process, after which
+#: the compiled code is loaded (about what loading it costs, so a process never pays more
+#: than about twice the better of the two paths).
 PY_BUDGET = 0.4
+
+#: Where ``method="auto"`` uses the Taylor method, per ground: ``(lowest, highest, factor)``
+#: -- for tolerances ``min(rtol, atol)`` in ``[lowest, highest]`` it runs the Taylor method
+#: at ``rtol`` and ``atol`` times ``factor`` (floored at 100 eps), where its energy drift is
+#: no larger than DOP853's at the tolerance asked for, so that ``"auto"`` keeps the accuracy
+#: the tolerance gave before it picked methods; DOP853 elsewhere.  Measured
+#: (benchmarks/simulate.py and 12 random perturbed circles per ground; docs/simulation.md):
+#: on rough ground the Taylor method at 1e-3 times the tolerance matches DOP853's drift from
+#: 1e-2 down to round-off (within 1e-14 at 1e-12) and is 1.3-9 times as fast.  On smooth
+#: ground the factor it needs varies from job to job (3e-4 on some, below 3e-5 on the
+#: benchmark's circle) and its drift stops falling at about 1e-12 (round-off in the
+#: quotient of eq. 49) where DOP853's goes on to 1e-14: DOP853 there.
+TAYLOR_RANGE = {"rough": (0.0, 1.0, 1e-3)}
+_TOL_FLOOR = 100 * float(np.finfo(float).eps)
+
+#: The clock of the uncompiled seconds (a test replaces it).
+clock = time.perf_counter
+_py_seconds = 0.0
 
 #: About how long a compile takes (seconds): a run projected to need more than this
 #: uncompiled waits for the background compiler when no core is idle (see worth_waiting).
@@ -128,6 +166,65 @@ def start_background_compile() -> bool:
     return True
 
 
+def py_seconds() -> float:
+    """Seconds this process has spent integrating uncompiled, over all its runs."""
+    return _py_seconds
+
+
+def spend(seconds: float) -> None:
+    """Count ``seconds`` more of uncompiled integration against :data:`PY_BUDGET`."""
+    global _py_seconds
+    _py_seconds += max(0.0, float(seconds))
+
+
+def budget_spent() -> bool:
+    """Whether the process has integrated uncompiled for :data:`PY_BUDGET` s in total."""
+    return _py_seconds >= PY_BUDGET
+
+
+def pick_core(state: dict, elapsed: float, fraction: float):
+    """The integrator for the next chunk of a run, by the rule of this module's docstring:
+    ``(module, compiled)``.  ``state``: a dict kept by the run (what it has started or
+    waited for); ``elapsed``: seconds the run has spent so far; ``fraction``: the part of
+    its span done (for :func:`worth_waiting`)."""
+    if _core is not None:
+        return _core, True
+    if budget_spent():
+        cold = not ready()
+        if cold and not state.get("spawned"):
+            state["spawned"] = True
+            start_background_compile()
+        elif cold and not state.get("waited") and worth_waiting(elapsed, fraction):
+            state["waited"] = True
+            wait_ready()
+        if ready():
+            jit_compile()  # loads from the on-disk cache
+            return _core, True
+    from rollingdisk.integrate import pycore
+
+    return pycore, False
+
+
+def auto_method(ground: str, rtol: float, atol: float, *, events: bool, dense_output: bool,
+                first_step: bool) -> tuple[str, float, float]:
+    """What ``simulate(method="auto")`` runs: ``(method, rtol, atol)``.
+
+    ``"scipy"`` with user events, ``"dop853"`` with ``dense_output`` or ``first_step``
+    (options of those methods only) or for a tolerance ``min(rtol, atol)`` outside the
+    ground's :data:`TAYLOR_RANGE`; otherwise ``"auto-taylor"``: the Taylor method at
+    ``rtol`` and ``atol`` times the range's factor (``rtol`` floored at 100 eps, ``atol``
+    never above what was asked) once the compiled code is loaded, uncompiled DOP853 at the
+    tolerances asked for until then (see the module docstring).
+    """
+    if events:
+        return "scipy", rtol, atol
+    lowest, highest, factor = TAYLOR_RANGE.get(ground, (0.0, -1.0, 1.0))
+    if dense_output or first_step or not lowest <= min(rtol, atol) <= highest:
+        return "dop853", rtol, atol
+    return ("auto-taylor", max(rtol * factor, _TOL_FLOOR),
+            max(atol * factor, min(atol, _TOL_FLOOR)))
+
+
 def worth_waiting(elapsed: float, fraction: float) -> bool:
     """Whether a run that has spent ``elapsed`` seconds uncompiled on ``fraction`` of its
     span should wait for the background compiler: it would need more than
@@ -208,9 +305,11 @@ def jit_compile() -> float:
     run this is the time to load it.  A cache left stale by an edit of the kernels in
     :mod:`rollingdisk.model.equations` (eqs. 11, 38, 49) is detected and recompiled.
     :func:`simulate` does not need it: it starts uncompiled and loads the compiled code
-    once a run is long enough to be worth it, filling a cold cache in a background
-    process meanwhile (:mod:`rollingdisk.integrate.jit`).  Call it to compile (or load) up front,
-    e.g. before timing runs: every later run is compiled from its first step.
+    once the process has integrated uncompiled for ``PY_BUDGET`` seconds in total, filling
+    a cold cache in a background process meanwhile (:mod:`rollingdisk.integrate.jit`).
+    Call it to compile (or load) up front, e.g. before timing runs: every later run is
+    compiled from its first step (and ``method="auto"`` is the Taylor method on rough
+    ground).
 
     Returns
     -------

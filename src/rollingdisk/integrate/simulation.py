@@ -3,10 +3,10 @@
 The equations of motion of :mod:`rollingdisk.model.equations` (eqs. 1, 2, 37, 38 on rough ground;
 2, 8, 49 on smooth ground) are integrated from any initial state by :func:`simulate`, or from
 a perturbed steady motion by :func:`simulate_steady`.  Two drivers take the same steps:
-``method="dop853"`` (default), rollingdisk's Dormand-Prince 8(5,3) with scipy's step size
-control (:mod:`rollingdisk.integrate.dop853`; uncompiled while a run is short, compiled by numba
-once
-it is long enough to be worth loading, see :mod:`rollingdisk.integrate.jit`), run in chunks of at
+``method="dop853"``, rollingdisk's Dormand-Prince 8(5,3) with scipy's step size
+control (:mod:`rollingdisk.integrate.dop853`; uncompiled while the process has integrated
+little, compiled by numba once it is worth loading, see :mod:`rollingdisk.integrate.jit`;
+``method="auto"``, the default, goes on with the Taylor method then), run in chunks of at
 most about 0.05 s so that progress is reported and Ctrl-C (``KeyboardInterrupt``) or SIGTERM
 (:class:`rollingdisk.util.files.Terminated`) surfaces between chunks; and ``method="scipy"``,
 scipy's own ``DOP853`` stepped one step at a time.  Both locate the guards on the dense
@@ -208,14 +208,22 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
         :data:`~rollingdisk.model.state.SMOOTH_STATE`; finite, ``|theta| < pi/2`` and
         ``theta != 0`` if ``h > 0``, energy and rates of change finite.
     method : {"auto", "dop853", "taylor", "scipy"}
-        ``"dop853"``: rollingdisk's DOP853, uncompiled for a short run and compiled (numba)
-        once a run has taken ``rollingdisk.integrate.jit.PY_BUDGET`` (0.4) s; the same steps either
-        way.  ``"taylor"``: a compiled Taylor-series method of order
-        ``ceil(-ln(tol)/2) + 1`` (:mod:`rollingdisk.integrate.taylor`; fewer, longer steps, about
-        twice as fast as DOP853 at tolerances of 1e-12 and below; compiled on first use,
-        no ``dense_output``, no ``first_step``; ``n_rhs`` counts its series, one per
-        step).  ``"scipy"``: scipy's ``DOP853`` stepped on the numpy right-hand side.
-        ``"auto"``: ``"dop853"``, or ``"scipy"`` when user ``events`` are given.
+        ``"auto"`` (default): the fastest method the process has for the tolerance at
+        equal accuracy (:func:`rollingdisk.integrate.jit.auto_method`; docs/simulation.md
+        has the measured table): ``"scipy"`` with user ``events``, ``"dop853"`` with
+        ``dense_output`` or ``first_step`` or on smooth ground; otherwise the compiled
+        Taylor method at ``1e-3`` times ``rtol`` and ``atol`` (its energy drift there is no
+        larger than DOP853's at the tolerance asked for), which starts as
+        uncompiled DOP853 while the process has no compiled code (``traj.method`` then
+        says ``"dop853"`` or ``"dop853+taylor"``).
+        ``"dop853"``: rollingdisk's DOP853, uncompiled until the process has spent
+        ``rollingdisk.integrate.jit.PY_BUDGET`` (0.4) s uncompiled over all its runs, then
+        compiled (numba); the same steps either way.  ``"taylor"``: a compiled
+        Taylor-series method of order ``ceil(-ln(tol)/2) + 1``
+        (:mod:`rollingdisk.integrate.taylor`; fewer, longer steps, 2-10 times as fast as
+        DOP853 at equal energy drift; compiled on first use, no ``dense_output``, no
+        ``first_step``; ``n_rhs`` counts its series, one per step).
+        ``"scipy"``: scipy's ``DOP853`` stepped on the numpy right-hand side.
     rtol : float
         Relative tolerance, in ``[100 eps, 1]``.
     atol : float
@@ -309,8 +317,15 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
         events = [events]
     if events is not None and len(events) == 0:
         events = None
+    taylor_tol = None
     if method == "auto":
-        method = "scipy" if events is not None else "dop853"
+        from rollingdisk.integrate.jit import auto_method
+
+        method, t_rtol, t_atol = auto_method(ground, rtol, atol, events=events is not None,
+                                             dense_output=bool(dense_output),
+                                             first_step=first_step is not None)
+        if method == "auto-taylor":
+            taylor_tol = (t_rtol, _atol_vector(ground, t_atol, error_control))
     if method in ("dop853", "taylor") and events is not None:
         raise ParameterError(f"method={method!r} takes no user events; use method='scipy' "
                              "(or 'auto') for events")
@@ -323,12 +338,15 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
     use = [g for g in _ev.guard_events(disk, ground, y)] if guards else []
     from rollingdisk.integrate.drivers import run_compiled, run_scipy, run_taylor
 
-    run = {"scipy": run_scipy, "dop853": run_compiled, "taylor": run_taylor}[method]
-    return run(disk, ground, y, t0, t1, rtol=rtol, atol=_atol_vector(ground, atol, error_control),
-               max_step=max_step,
-               first_step=first_step, t_eval=t_eval, dense_output=bool(dense_output),
-               events=events, guards=use, max_steps=int(max_steps), progress=progress,
-               out=_Output(sink), finish=_finish)
+    run = {"scipy": run_scipy, "dop853": run_compiled, "taylor": run_taylor}
+    extra = {}
+    if method == "auto-taylor":
+        method, extra = "dop853", {"mode": "auto-taylor", "taylor_tol": taylor_tol}
+    return run[method](disk, ground, y, t0, t1, rtol=rtol,
+                       atol=_atol_vector(ground, atol, error_control), max_step=max_step,
+                       first_step=first_step, t_eval=t_eval, dense_output=bool(dense_output),
+                       events=events, guards=use, max_steps=int(max_steps),
+                       progress=progress, out=_Output(sink), finish=_finish, **extra)
 
 
 def simulate_steady(motion, t_end: float, *, perturb: float = 0.0, kick: float = 0.0,

@@ -68,7 +68,9 @@ class Trajectory:
     n_steps, n_rhs : int
         Accepted integration steps and right-hand-side evaluations.
     method : str
-        ``"dop853"`` (rollingdisk's DOP853, compiled or not) or ``"scipy"``.
+        ``"dop853"`` (rollingdisk's DOP853, compiled or not), ``"taylor"``,
+        ``"dop853+taylor"`` (``method="auto"`` switched when the compiled code was loaded)
+        or ``"scipy"``.
     t_event : float or None
         Time of the guard event, if one fired.
     wall_time : float
