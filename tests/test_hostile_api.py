@@ -121,7 +121,7 @@ SKIPPED = {
 
 #: (function, argument) pairs whose validation lives in a module this test's branch does not
 #: own, with an ``xfail(strict=True)`` test below that turns red once it is fixed.
-PENDING = {("simulate", 3)}
+PENDING: set = set()
 
 
 def _public_callables():
@@ -174,10 +174,6 @@ def test_hostile_argument_raises_only_type_or_value_errors(name, data):
             raise
 
 
-@pytest.mark.xfail(strict=True, raises=OverflowError,
-                   reason="integrate/simulation.py: _check_state converts y0 with np.array and "
-                          "does not catch OverflowError (owned by another branch; one line: "
-                          "catch OverflowError beside TypeError, ValueError)")
 def test_simulate_y0_beyond_floating_point_range():
     y0 = list(Y_ROUGH)
     y0[0] = 10**400

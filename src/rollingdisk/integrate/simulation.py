@@ -31,7 +31,7 @@ from rollingdisk.integrate.trajectory import Trajectory
 from rollingdisk.model.disk import Disk, check_ground
 from rollingdisk.model.equations import _check_disk, energy, equations_of_motion
 from rollingdisk.model.state import state_index, state_names
-from rollingdisk.util.checks import check_real
+from rollingdisk.util.checks import check_real, real_array
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["DEFAULT_RTOL", "DEFAULT_ATOL", "DEFAULT_MAX_STEPS", "MAX_T", "simulate",
@@ -58,8 +58,8 @@ _CHUNK_SECONDS = 0.05  # wall time of one compiled chunk (interrupts surface bet
 def _check_state(disk: Disk, ground: str, y0) -> np.ndarray:
     names = state_names(ground)
     try:
-        y = np.array(y0, dtype=float)
-    except (TypeError, ValueError):
+        y = np.array(real_array("y0", y0), dtype=float)  # 10**400: a ParameterError
+    except ParameterTypeError:
         raise ParameterError(f"y0 must be a sequence of {len(names)} real numbers "
                              f"({', '.join(names)}), got {y0!r}") from None
     if y.shape != (len(names),):
