@@ -79,16 +79,18 @@ def configure(sub):
                    help="pivoting (drilling) friction length c >= 0: |M_z| = c F_z; in units "
                    "of a, or a length with a unit for a disk with a physical size")
     c.add_argument("--air", type=real("air", low=0.0), default=None, metavar="C",
-                   help="air-film drag coefficient c >= 0 (Moffatt's model: a moment per "
-                   "angular speed, units m a^(3/2) g^(1/2); c = 2 pi mu_air a^(3/2) / "
-                   "(m g^(1/2)), about 2.2e-4 for Euler's disk in air)")
+                   help="air-film drag coefficient c >= 0 (the squeeze film under the disk: a "
+                   "moment per angular speed, units m a^(3/2) g^(1/2); c = K mu_air a^(3/2) / "
+                   "(m g^(1/2)) with K = 1.28113 derived, about 1.2e-7 for Euler's disk in "
+                   "air)")
     add_perturbation_args(p)
     t_end_arg(p, high=SIMULATE_T_END_MAX)
     add_tolerance_args(p)
-    p.add_argument("--method", choices=("dop853", "taylor", "scipy"), default="dop853",
-                   help="rollingdisk's DOP853 (default; compiled once a run is long enough "
-                   "to be worth it), its Taylor-series method (compiled on first use; "
-                   "fastest at tight tolerances) or scipy's DOP853")
+    p.add_argument("--method", choices=("auto", "dop853", "taylor", "scipy"), default="auto",
+                   help="auto (default: the fastest method this process has for the "
+                   "tolerance, see docs/simulation.md), rollingdisk's DOP853 (compiled once "
+                   "the process has run uncompiled for long enough), its Taylor-series method "
+                   "(compiled on first use; fastest at tight tolerances) or scipy's DOP853")
     p.add_argument("--error-control", dest="error_control", choices=("full", "reduced"),
                    default="full", help="tolerances on the whole state (default) or on "
                    "(theta, omega1, omega2, omega3) only, the quadratures X_C, Y_C, psi, phi "
@@ -229,7 +231,7 @@ def _coulomb_ground(args, disk):
     if args.mu is None:
         raise CLIError("rollingdisk simulate: --ground coulomb needs --mu (static friction "
                        "coefficient, e.g. --mu 0.3)")
-    if args.method != "dop853" or args.error_control != "full":
+    if args.method not in ("auto", "dop853") or args.error_control != "full":
         raise CLIError("rollingdisk simulate: --method and --error-control are for rough and "
                        "smooth ground; coulomb ground has its own hybrid integrator")
     import rollingdisk as rd
