@@ -127,6 +127,13 @@ def add_perturbation_args(p, *, kick: float | None = 0.0, perturb: float | None 
                    + ("" if kick is None else f" (default {kick:g})"))
 
 
+def add_json_arg(p) -> None:
+    """``--json``: one JSON object on stdout, with SI fields for a disk with a size."""
+    p.add_argument("--json", action="store_true",
+                   help="print one JSON object (for a disk with a physical size: SI values "
+                   "as <name>_si fields and a \"units\" map)")
+
+
 def add_tolerance_args(p) -> None:
     """``--rtol`` and ``--atol`` in the ranges every integrator honours."""
     lo, hi = RTOL_RANGE

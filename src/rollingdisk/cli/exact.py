@@ -12,6 +12,7 @@ from __future__ import annotations
 import json
 
 from rollingdisk.cli._args import (
+    add_json_arg,
     add_motion_args,
     add_perturbation_args,
     add_state_arg,
@@ -49,9 +50,7 @@ def configure(sub):
     p.add_argument("--out", type=str, default=None, metavar="FILE.png",
                    help="a figure: theta(t) over a period, the contact point's rosette, and "
                    "the backbone curve (frequency against amplitude) about the steady motion")
-    p.add_argument("--json", action="store_true",
-                   help="print one JSON object (for a disk with a physical size: SI values "
-                   "as <name>_si fields and a \"units\" map)")
+    add_json_arg(p)
     return p
 
 

@@ -17,6 +17,7 @@ import json
 from rollingdisk.cli._args import (
     SIMULATE_T_END_MAX,
     CLIError,
+    add_json_arg,
     add_motion_args,
     add_perturbation_args,
     add_state_arg,
@@ -105,9 +106,7 @@ def configure(sub):
                    "first line names the columns; in the paper's units, or for a disk with "
                    "a physical size in SI units (forces and energies only with --mass) with "
                    "a second line '# t [s],X_C [m],...' naming each column's unit")
-    p.add_argument("--json", action="store_true",
-                   help="print one JSON object (for a disk with a physical size: SI values "
-                   "as <name>_si fields and a \"units\" map)")
+    add_json_arg(p)
     return p
 
 

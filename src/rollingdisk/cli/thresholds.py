@@ -12,7 +12,7 @@ from __future__ import annotations
 import json
 import math
 
-from rollingdisk.cli._args import add_disk_options, disk_from_args
+from rollingdisk.cli._args import add_disk_options, add_json_arg, disk_from_args
 from rollingdisk.cli._format import disk_fields, disk_line, has_scale, with_si
 
 EQUATIONS = {("rough", "straight_line_omega20_sq"): "(42)",
@@ -42,9 +42,7 @@ def configure(sub):
         "with a physical size (--disk, --radius/--diameter with --thickness) also as speeds "
         "in SI units: the straight-rolling threshold as the speed of C in m/s.")
     add_disk_options(p, required=True)
-    p.add_argument("--json", action="store_true",
-                   help="print one JSON object (with a physical size: the SI values as "
-                   "<name>_si fields and a \"units\" map)")
+    add_json_arg(p)
     return p
 
 
