@@ -413,6 +413,33 @@ def _face_impact(h, s):
     return flat, spin, face, lost, -s[8]
 
 
+def _touchdown(disk, s):
+    """:func:`touchdown_time`; where its conservative advancement stalls on a grazing
+    flight (the lowest point skimming the plane), a scan of the closed-form height on a
+    grid of steps ``<= 0.1/(1 + |omega|)`` and ``brentq`` on the first sign change."""
+    try:
+        return touchdown_time(disk, s, inside_tol=1e-9)
+    except RuntimeError:
+        pass
+    from scipy.optimize import brentq
+
+    h = disk.h
+
+    def H(t):
+        x = free_flight(disk, s, t)
+        return _lowest_height(h, x[2], x[4])
+
+    V, Z = s[8], s[2]
+    T = V + math.sqrt(V * V + 2.0 * max(Z - min(1.0, h), 0.0)) + 1e-9
+    dt = 0.1 / (1.0 + float(np.linalg.norm(s[9:12])))
+    ts = np.arange(0.0, T + dt, dt)
+    Hs = [H(x) for x in ts]
+    for i in range(1, ts.size):
+        if Hs[i] <= 0.0:
+            return brentq(H, ts[i - 1], ts[i], xtol=1e-15, rtol=8.9e-16)
+    return float(ts[-1])
+
+
 # --------------------------------------------------------------------- the loop
 def _check_inputs(disk, ground, t_span, y0, e, mu_impact, stop_at):
     if not isinstance(disk, Disk):
@@ -690,7 +717,7 @@ class _Motion:
             else:
                 return ("end", "failed", f"the disk neither stays on nor leaves the plane "
                         f"at t = {t:.12g} (lift-off with F_z = 0 but no separation)", t, s)
-        tau = t_skip + touchdown_time(self.disk, s_start, inside_tol=1e-9)
+        tau = t_skip + _touchdown(self.disk, s_start)
         t_hit = t + tau
         if t_hit >= self.t1:
             s1 = free_flight(self.disk, s, self.t1 - t)
