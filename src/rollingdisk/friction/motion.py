@@ -26,21 +26,20 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from rollingdisk.friction import coulomb as _cl
 from rollingdisk.friction.coulomb import coulomb_contact, coulomb_energy
 from rollingdisk.friction.ground import Coulomb
-from rollingdisk.friction.hybrid import simulate_coulomb
+from rollingdisk.friction.hybrid import simulate_coulomb, slip_direction
 from rollingdisk.friction.impact import (
     _lowest_height,
     _r_xyz,
     _rot_x,
     _rot_z,
-    free_energy,
     free_flight,
     impact,
     lowest_point,
     touchdown_time,
 )
-from rollingdisk.integrate.trajectory import Trajectory
 from rollingdisk.model.disk import Disk
 from rollingdisk.model.outcomes import outcome
 from rollingdisk.util.checks import check_int, check_real
@@ -307,8 +306,8 @@ def flat_friction(speed: float, spin: float) -> tuple[float, float]:
 
     Examples
     --------
-    >>> [round(x, 6) for x in flat_friction(1.0, 0.0)], [round(x, 6) for x in flat_friction(0.0, 1.0)]
-    ([1.0, 0.0], [0.0, 0.666667])
+    >>> flat_friction(1.0, 0.0), [round(x, 6) for x in flat_friction(0.0, 1.0)]
+    ((1.0, 0.0), [0.0, 0.666667])
     """
     v = check_real("speed", speed, low=0.0)
     om = check_real("spin", spin, low=0.0)
@@ -716,7 +715,9 @@ class _Motion:
                     break
             else:
                 return ("end", "failed", f"the disk neither stays on nor leaves the plane "
-                        f"at t = {t:.12g} (lift-off with F_z = 0 but no separation)", t, s)
+                        f"at t = {t:.12g}: F_z = 0 in contact but the free disk would sink "
+                        "(Painleve's paradox of sliding with large friction; an impact "
+                        "without collision, outside this model)", t, s)
         tau = t_skip + _touchdown(self.disk, s_start)
         t_hit = t + tau
         if t_hit >= self.t1:
@@ -743,11 +744,8 @@ class _Motion:
         y = _contact_from_free(s, side)
         if _kinetic(h, s) <= self.rest_energy and h > 0.0 and abs(s[4]) < 1e-6:
             return self._rest_on_tread(t, s)
-        slip, _ = _edge_velocity(h, s, side)
-        mode = "rolling" if math.hypot(slip[0], slip[1]) <= 1e-9 * (
-            1.0 + math.hypot(s[6], s[7])) else "sliding"
-        F_z = coulomb_contact(self.disk, self.ground, mode, y)["F_z"]
-        if F_z <= 0.0:  # the plane cannot hold it: it flies off at zero normal velocity
+        if self._start_force(s, side, y) <= 0.0 and self._separates(s):
+            # the plane cannot hold it: it flies off at zero normal velocity
             if "lift-off" in self.stop_at:
                 return ("end", "lift-off", f"lift-off at t = {t:.12g}: F_z <= 0 at the "
                         "start of a contact phase", t, s)
@@ -784,6 +782,34 @@ class _Motion:
             s2, side2 = self._strike(t, s, -side, "rim-change")
             return self._after_impact(t, s2, side2)
         return ("end", tr.status, tr.message, t, s)
+
+    def _start_force(self, s, side, y):
+        """``F_z`` in the mode :func:`simulate_coulomb` starts in at ``y``: rolling if the
+        slip is zero and rolling's friction lies in the cone, else sliding (in the solved
+        slip direction when the slip is zero)."""
+        h, g = self.h, self.ground
+        slip, _ = _edge_velocity(h, s, side)
+        U = math.hypot(slip[0], slip[1])
+        if U <= 1e-9 * (1.0 + math.hypot(s[6], s[7])):
+            c = coulomb_contact(self.disk, g, "rolling", y)
+            if c["F_t"] <= g.mu_s * c["F_z"]:
+                return c["F_z"]
+            d = slip_direction(self.disk, g, y)
+            if d is None:
+                return c["F_z"]
+            ref = _cl._to_inertial(y[4], d[0], d[1])
+        else:
+            ref = _cl._to_inertial(y[4], slip[0] / U, slip[1] / U)
+        return _cl._coulomb_sliding(h, g.mu_k, *g.coefficients, y, ref[0], ref[1])[3]
+
+    def _separates(self, s):
+        """Whether the free disk leaves the plane within 1e-2 (its lowest point rises)."""
+        h = self.h
+        for d in (1e-4, 1e-3, 1e-2):
+            sd = free_flight(self.disk, s, d)
+            if _lowest_height(h, sd[2], sd[4]) > 1e-12:
+                return True
+        return False
 
     def _rest_on_tread(self, t, s):
         """Zeno rule of the rocking disk: upright on its tread with kinetic energy below
