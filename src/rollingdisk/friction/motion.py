@@ -478,6 +478,7 @@ def simulate_to_rest(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
                      v_capture: float = 1e-3, zeno_count: int = 20,
                      zeno_window: float = 0.05, rest_energy: float = 1e-10,
                      rtol: float = 1e-10, atol: float = 1e-12, chunk: float = math.inf,
+                     max_steps: int = 2_000_000,
                      decide: Callable | None = None,
                      progress: Callable[[float], None] | None = None) -> MotionResult:
     """Run the disk through contact, flight, impacts and the flat phase, to rest.
@@ -517,6 +518,9 @@ def simulate_to_rest(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         change, or at the end of a contact phase) is at rest.
     rtol, atol : float
         Tolerances of the contact phases.
+    max_steps : int
+        Step budget of one contact segment (:func:`simulate_coulomb`); beyond it the run
+        ends ``"failed"``.
     chunk : float
         Longest contact segment [``sqrt(a/g)``] before ``decide`` is asked again.
     decide : callable, optional
@@ -564,6 +568,7 @@ def simulate_to_rest(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     run = _Motion(disk, ground, t0, t1, e, mu, stop_at, max_segments, max_wall, alpha_flat,
                   v_capture, zeno_count, zeno_window, rest_energy, rtol, atol, chunk,
                   decide, progress)
+    run.max_steps = check_int("max_steps", max_steps, low=1)
     return run.go(y)
 
 
@@ -753,7 +758,7 @@ class _Motion:
         t_stop = min(self.t1, t + self.chunk)
         tr = simulate_coulomb(self.disk, self.ground, (t, t_stop), y, rtol=self.rtol,
                               atol=self.atol, slip_tol=1e-9, alpha_min=self.alpha_flat,
-                              max_steps=2_000_000)
+                              max_steps=self.max_steps)
         self.segments.append(tr)
         modes = ("rolling", "sliding")
         self._enter(t, modes[int(tr.mode[0])])

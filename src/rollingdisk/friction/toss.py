@@ -174,7 +174,8 @@ def toss(disk: Disk, height: float, velocity: float, spin: float, tilt: float = 
     c_roll = check_real("rolling_resistance", rolling_resistance, low=0.0)
     res = simulate_to_rest(disk, Coulomb(mu, rolling_resistance=c_roll), (0.0, t_end), s0,
                            e=e, mu_impact=mu, decide=_trap(h) if early else None,
-                           chunk=5.0, max_wall=max_wall, rtol=rtol, atol=atol)
+                           chunk=1.0, max_wall=max_wall, rtol=rtol, atol=atol,
+                           max_steps=20_000)
     out, by = _classify(h, res)
     return TossResult(out, by, res.t_end, len(res.impacts), res)
 
