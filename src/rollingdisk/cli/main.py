@@ -67,6 +67,8 @@ COMMANDS = (
      "perturbation and write a 3D animation (.gif, or .mp4 with ffmpeg)"),
     ("derive", "rollingdisk.cli.derive", "derive the equations of motion with sympy and "
      "check every printed equation of the paper against the derivation"),
+    ("toss", "rollingdisk.cli.toss", "toss a disk many times: heads, tails or edge, with "
+     "flight, impacts, rolling and sliding to the end"),
     ("explore", "rollingdisk.explore.command",
      "interactive explorer in the web browser: maps, steady motions, 3D"),
 )

@@ -1,50 +1,69 @@
 """``rollingdisk toss``: heads, tails or edge over random tosses of one disk.
 
-Thin: parses, calls :func:`rollingdisk.friction.toss.toss_ensemble`, prints and plots.
-Register with ``configure(subparsers)``; ``run(args) -> int``.
+Each toss runs through flight, impacts, rolling and sliding
+(:func:`rollingdisk.friction.motion.simulate_to_rest`) until its outcome is certain (the
+energy below the balancing barrier) or the disk is at rest; docs/motion.md.
+
+Examples::
+
+    $ rollingdisk toss --h 0.1 --n 20 --seed 1
+    $ rollingdisk toss --disk us-quarter --n 50 --workers 2 --results tosses.jsonl --json
+    $ rollingdisk toss --h 0.3 --n 20 --out toss.png
 """
 
 from __future__ import annotations
 
-import argparse
 import json
 import os
 import sys
 
+from rollingdisk.cli._args import add_disk_options, disk_from_args, integer, real
+
 __all__ = ["configure", "run"]
 
 
-def configure(subparsers) -> argparse.ArgumentParser:
+def configure(subparsers):
     """Add the ``toss`` subcommand to ``subparsers`` and return its parser."""
     p = subparsers.add_parser(
-        "toss", help="toss a coin of half-thickness h many times: heads, tails, edge",
-        description="Random tosses (docs/motion.md): each runs through flight, impacts, "
-                    "rolling and sliding until the outcome is certain (energy below the "
-                    "balancing barrier) or the disk is at rest.")
-    p.add_argument("--h", type=float, required=True, help="half-thickness / radius, >= 0")
-    p.add_argument("--n", type=int, default=200, help="number of tosses (default 200)")
-    p.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
-    p.add_argument("--e", type=float, default=0.5, help="restitution in [0, 1]")
-    p.add_argument("--mu", type=float, default=0.5, help="friction coefficient >= 0")
-    p.add_argument("--workers", type=int, default=1, help="processes (default 1)")
-    p.add_argument("--results", help="JSON-lines file of each toss; resumes if present")
-    p.add_argument("--json", action="store_true", help="print the result as JSON")
-    p.add_argument("--out", help="PNG plot of the outcome probabilities")
-    p.set_defaults(handler=run)
+        "toss", description="Random tosses of one disk (launch conditions: docs/motion.md): "
+        "each runs through flight, impacts, rolling and sliding until its outcome is "
+        "certain or the disk is at rest. Prints the frequency of heads, tails, edge and "
+        "undecided (a toss that spent its wall-clock budget) with 95% Wilson intervals.")
+    add_disk_options(p, required=True)
+    p.add_argument("--n", type=integer("n", 1, 1_000_000), default=20,
+                   help="number of tosses, >= 1 (default 20)")
+    p.add_argument("--seed", type=integer("seed", 0, 2**63 - 1), default=0,
+                   help="random seed of the launch conditions (default 0)")
+    p.add_argument("--e", type=real("e", low=0.0, high=1.0), default=0.5,
+                   help="coefficient of restitution of the impacts, in [0, 1] (default 0.5)")
+    p.add_argument("--mu", type=real("mu", low=0.0, high=1e6), default=0.5,
+                   help="Coulomb friction coefficient at the contact, dimensionless, in "
+                   "[0, 1e6] (default 0.5)")
+    p.add_argument("--max-wall", dest="max_wall", type=real("max_wall", low=0.0, high=3600.0,
+                                                            low_open=True), default=20.0,
+                   help="wall-clock budget of one toss in seconds (default 20); a toss "
+                   "that spends it counts as undecided")
+    p.add_argument("--workers", type=integer("workers", 1, 256), default=1,
+                   help="processes (default 1)")
+    p.add_argument("--results", default=None, metavar="FILE.jsonl",
+                   help="one JSON line per toss, appended as each ends; an interrupted "
+                   "ensemble resumes from it")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.add_argument("--out", default=None, metavar="FILE.png",
+                   help="a bar chart of the outcome probabilities with their intervals")
     return p
 
 
 def run(args) -> int:
-    """Run the ensemble; 0 done (library input errors propagate to the caller's handler)."""
-    import rollingdisk as rd
+    """Run the ensemble, print (and plot) its frequencies; 0 when done."""
     from rollingdisk.friction.toss import TOSS_OUTCOMES, toss_ensemble
-    from rollingdisk.util.files import atomic_file, check_writable
+    from rollingdisk.util.files import check_writable
 
-    disk = rd.Disk(h=args.h)
+    disk = disk_from_args(args)
     if args.out:
         check_writable(args.out, name="out")
     res = toss_ensemble(disk, args.n, args.seed, e=args.e, mu=args.mu,
-                        workers=args.workers, results=args.results)
+                        workers=args.workers, results=args.results, max_wall=args.max_wall)
     if args.json:
         print(json.dumps(res.as_dict(), allow_nan=False))
     else:
@@ -55,23 +74,26 @@ def run(args) -> int:
         print(f"h = {res.h:g}, n = {res.n}, seed = {res.seed}, {res.wall_time:.1f} s",
               file=sys.stderr)
     if args.out:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-
-        fig, ax = plt.subplots(figsize=(5, 3.5))
-        p = [res.counts[k] / res.n for k in TOSS_OUTCOMES]
-        err = [[pk - res.interval(k)[0] for k, pk in zip(TOSS_OUTCOMES, p)],
-               [res.interval(k)[1] - pk for k, pk in zip(TOSS_OUTCOMES, p)]]
-        ax.bar(TOSS_OUTCOMES, p, yerr=err, capsize=4, color="0.6")
-        ax.set_ylabel("probability (95 % Wilson interval)")
-        ax.set_title(f"coin toss, h = {res.h:g}, n = {res.n}, e = {args.e:g}, "
-                     f"mu = {args.mu:g}")
-        fig.tight_layout()
-        with atomic_file(args.out, "wb") as f:
-            fig.savefig(f, format="png")
-        plt.close(fig)
-        if not args.json:
-            print(f"wrote {os.fspath(args.out)}", file=sys.stderr)
+        _plot(res, args)
     return 0
+
+
+def _plot(res, args) -> None:
+    from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
+
+    from rollingdisk.friction.toss import TOSS_OUTCOMES
+    from rollingdisk.util.files import atomic_file
+
+    fig = Figure(figsize=(5, 3.5))
+    ax = fig.subplots()
+    p = [res.counts[k] / res.n for k in TOSS_OUTCOMES]
+    err = [[pk - res.interval(k)[0] for k, pk in zip(TOSS_OUTCOMES, p)],
+           [res.interval(k)[1] - pk for k, pk in zip(TOSS_OUTCOMES, p)]]
+    ax.bar(TOSS_OUTCOMES, p, yerr=err, capsize=4, color="0.6")
+    ax.set_ylabel("probability (95 % Wilson interval)")
+    ax.set_title(f"coin toss, h = {res.h:g}, n = {res.n}, e = {args.e:g}, mu = {args.mu:g}")
+    fig.tight_layout()
+    with atomic_file(args.out, "wb") as f:
+        fig.savefig(f, format="png")
+    if not args.json:
+        print(f"wrote {os.fspath(args.out)}", file=sys.stderr)
