@@ -159,8 +159,8 @@ def test_frequency_plot(run):
     out = plot_chirp_frequency(run, Figure(), speed=SPEED)
     x, y = out["lines"]["frequency"].get_data()
     t, f = _hz(run)
-    np.testing.assert_allclose(np.interp(run.t_end_s - x, t, f), y, rtol=1e-9)
-    assert out["ax"].xaxis_inverted()
+    np.testing.assert_allclose(np.interp(run.t_end_s + x, t, f), y, rtol=1e-9)
+    assert x[-1] == pytest.approx(0.0, abs=1e-12) and y[-1] == pytest.approx(f[-1])
 
 
 CLI = ["euler-disk", "--quiet", "--alpha0", "0.05", "--rolling-resistance", "5e-3"]

@@ -208,9 +208,9 @@ def read_wav(path) -> tuple[np.ndarray, int]:
 
 def plot_chirp_frequency(result, fig=None, *, rate: int = RATE, speed: float = 1.0,
                          max_seconds: float = MAX_SECONDS) -> dict:
-    """The whirr's frequency ``Omega / (2 pi)`` [Hz] against the time to the end ``t_end -
-    t`` [s] (log-log, time running to the right), the span :func:`chirp` sounds shaded, the
-    audible floor (20 Hz) and the Nyquist frequency of ``rate`` marked.
+    """The whirr's frequency ``Omega / (2 pi)`` [Hz] (log scale) against the time to the
+    end ``t - t_end`` [s] (0 at the end), the span :func:`chirp` sounds shaded, the audible
+    floor (20 Hz) and, when the tone comes near it, the Nyquist frequency of ``rate``.
 
     Returns
     -------
@@ -226,21 +226,18 @@ def plot_chirp_frequency(result, fig=None, *, rate: int = RATE, speed: float = 1
     if fig is None:
         fig = _pyplot().figure(figsize=(6.4, 3.6))
     ax = fig.subplots()
-    left = t1 - t
-    ok = (left > 0) & (f > 0)
+    ok = f > 0
     i = np.flatnonzero(ok)[_thin(int(np.count_nonzero(ok)))]
-    (line,) = ax.loglog(left[i], f[i], color="C1", lw=1.4, label=r"$\Omega/2\pi$")
-    ax.invert_xaxis()
-    lo = max(float(left[i].min()), 1e-6) if i.size else 1e-6
-    ax.axvspan(lo, t1 - t0, color="C0", alpha=0.08,
-               label=f"sounded ({t1 - t0:.3g} s of the run in {(t1 - t0) / speed:.3g} s)")
+    (line,) = ax.semilogy(t[i] - t1, f[i], color="C1", lw=1.4, label=r"$\Omega/2\pi$")
+    ax.axvspan(t0 - t1, 0.0, color="C0", alpha=0.1,
+               label=f"sounded: {t1 - t0:.3g} s of the run in {(t1 - t0) / speed:.3g} s")
     ax.axhline(20.0, color="0.5", ls=":", lw=1, label="20 Hz (audible above)")
     if f[ok].size and f[ok].max() > 0.4 * rate:
         ax.axhline(0.5 * rate, color="C3", ls="--", lw=1, label=f"Nyquist {rate / 2:g} Hz")
-    ax.set_xlabel(r"time to the end $t_{end} - t$ [s]")
+    ax.set_xlabel(r"time to the end $t - t_{end}$ [s]")
     ax.set_ylabel(r"frequency $\Omega/2\pi$ [Hz]")
-    ax.set_title(f"the whirr: precession frequency, {f[-1]:.3g} Hz at the end "
-                 f"({r.end or r.status})", fontsize=9)
+    ax.set_title(f"the whirr: the contact point's precession, {f[-1]:.3g} Hz at the end "
+                 f"({r.end or r.status}, t_end = {t1:.4g} s)", fontsize=9)
     ax.legend(loc="upper left", fontsize=8)
     fig.tight_layout()
     return {"fig": fig, "ax": ax, "lines": {"frequency": line}}
