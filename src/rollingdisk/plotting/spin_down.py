@@ -74,7 +74,7 @@ def plot_spin_down_comparison(results, labels=None, fig=None, *,
             raise ParameterTypeError(f"results must be EulerDiskResult objects, got "
                                      f"{type(r).__name__}")
     if fig is None:
-        fig = _pyplot().figure(figsize=(11.0, 4.4))
+        fig = _pyplot().figure(figsize=(11.0, 5.6))
     ax1, ax2 = fig.subplots(1, 2)
     lines = {}
     for k, (label, r) in enumerate(zip(labels, runs)):
@@ -100,9 +100,9 @@ def plot_spin_down_comparison(results, labels=None, fig=None, *,
                 lines[f"{label}/{name}"].set_label(text)
     ax1.set_ylabel(r"tilt $\alpha$ [rad]")
     ax2.set_ylabel(r"whirr frequency $\Omega/2\pi$ [Hz]")
-    for ax, where in ((ax1, "lower right"), (ax2, "lower left")):
+    for ax in (ax1, ax2):  # legends under the axes: the curves fill the axes' corners
         ax.set_xlabel(r"time left $t_0 - t$ [s]  ($t_0$ fitted per run)")
-        ax.legend(loc=where, fontsize=7.5, title="exponents against $t_0 - t$ (thick: fit "
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), fontsize=7.5, title="exponents against $t_0 - t$ (thick: fit "
                   "window)", title_fontsize=7.5)
     toy = runs[0].toy
     if title is None:
