@@ -98,6 +98,8 @@ def test_dissipation_laws_and_default_window():
     assert laws["rolling resistance"].c_air == 0 == laws["rolling resistance"].c_boundary_layer
     assert laws["squeeze film"].rolling_resistance == 0 < laws["squeeze film"].c_air
     assert laws["boundary layer"].c_boundary_layer > 0 == laws["boundary layer"].c_air
+    with pytest.raises(TypeError, match="toy"):
+        dissipation_laws(3)
     r = run_euler_disk(EulerDisk(alpha0=0.06, **BL), predict=False)
     assert r.fit_window == (0.01, 0.05)
 

@@ -429,9 +429,11 @@ def dissipation_laws(toy: EulerDisk | None = None) -> dict[str, EulerDisk]:
     """
     import dataclasses
 
+    from rollingdisk.util.errors import ParameterTypeError
+
     toy = EulerDisk() if toy is None else toy
     if not isinstance(toy, EulerDisk):
-        raise ParameterError(f"toy must be an EulerDisk, got {type(toy).__name__}")
+        raise ParameterTypeError(f"toy must be an EulerDisk, got {type(toy).__name__}")
     c = toy.rolling_resistance
     air = toy.air_viscosity or AIR_VISCOSITY
     return {"rolling resistance": dataclasses.replace(toy, air_viscosity=None),

@@ -13,7 +13,7 @@ Only numpy at import; matplotlib when :func:`plot_chirp_frequency` draws.
 Examples
 --------
 >>> from rollingdisk.friction.euler_disk import EulerDisk, run_euler_disk
->>> r = run_euler_disk(EulerDisk(alpha0=0.05), predict=False)
+>>> r = run_euler_disk(EulerDisk(alpha0=0.05, rolling_resistance=5e-3), predict=False)
 >>> x = chirp(r, rate=8000, speed=4.0)
 >>> x.dtype, bool(abs(x).max() <= 1.0)
 (dtype('float64'), True)

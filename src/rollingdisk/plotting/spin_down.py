@@ -102,8 +102,8 @@ def plot_spin_down_comparison(results, labels=None, fig=None, *,
     ax2.set_ylabel(r"whirr frequency $\Omega/2\pi$ [Hz]")
     for ax in (ax1, ax2):  # legends under the axes: the curves fill the axes' corners
         ax.set_xlabel(r"time left $t_0 - t$ [s]  ($t_0$ fitted per run)")
-        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), fontsize=7.5, title="exponents against $t_0 - t$ (thick: fit "
-                  "window)", title_fontsize=7.5)
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), fontsize=7.5,
+                  title="exponents against $t_0 - t$ (thick: fit window)", title_fontsize=7.5)
     toy = runs[0].toy
     if title is None:
         title = (f"Euler's disk (a = {toy.radius * 1e3:.4g} mm, m = {toy.mass:.3g} kg, "
