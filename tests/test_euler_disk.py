@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 import rollingdisk as rd
+from rollingdisk.friction.air_models import BoundaryLayerAirDrag
 from rollingdisk.friction.euler_disk import (
     AIR_VISCOSITY,
     FIT_WINDOW_AIR,
@@ -78,6 +79,40 @@ def test_creep_rhs_equals_sympy_sliding_system():
         dx2, F_z2, n2 = _rhs(h, mu, u_s, c_roll, c_air, eps, np.stack([x, x], axis=1))
         np.testing.assert_allclose(dx2[:, 1], dx, rtol=1e-14, atol=1e-300)
         assert F_z2[0] == F_z
+
+
+def test_boundary_layer_rhs_equals_sympy_sliding_system():
+    """The right-hand side with c_bl against the derived sliding system with the moment of
+    BoundaryLayerAirDrag (plus the smoothed rolling resistance)."""
+    from rollingdisk.symbolic.coulomb import lambdified_coulomb
+
+    sliding = lambdified_coulomb()["sliding"]
+    rng = np.random.default_rng(11)
+    for i in range(40):
+        h = 0.0 if i % 10 == 0 else rng.uniform(0, 2)
+        mu, u_s = rng.uniform(0, 1), rng.choice([1e-3, 0.1, 10.0])
+        c_roll, c_bl, eps = rng.uniform(0, 0.1), rng.uniform(0, 0.1), 1e-6
+        x = _random_reduced(rng, h)
+        v_Cx, v_Cy, th, w1, w2, w3 = x[:6]
+        ht, s, c, p, y_P, z_P = eq._geometry(h, th)
+        u = np.array([v_Cx - w2 + ht * w3, v_Cy - w1 * z_P])
+        e = creep_factor(np.hypot(*u), u_s) * u
+        wx, wy, _ = rd.angular_velocity_xyz(th, w1, w2, w3)
+        r = math.hypot(wx, wy)
+        M1 = rd.RollingResistance(c_roll).moment(th, w1, w2, w3, 1.0)
+        M1 = tuple(m * r / math.sqrt(r * r + eps * eps) for m in M1)
+        M = (*BoundaryLayerAirDrag(c_bl).moment(th, w1, w2, w3), *M1)
+        ref = sliding(ht, th, w1, w2, w3, v_Cx, v_Cy, mu, *e, *M)
+        dx, F_z, _ = _rhs(h, mu, u_s, c_roll, 0.0, eps, x, c_bl=c_bl)
+        np.testing.assert_allclose(dx[:6], [ref[6], ref[7], w1, ref[0], ref[1], ref[2]],
+                                   rtol=1e-10, atol=1e-10)
+        np.testing.assert_allclose(F_z, ref[5], rtol=1e-10, atol=1e-12)
+        # the air term's power is the model's: -c |Omega|^(5/2)
+        assert dx[8] == pytest.approx(-BoundaryLayerAirDrag(c_bl).power(th, w1, w2, w3),
+                                      rel=1e-12, abs=1e-300)
+        dx2, F_z2, _ = _rhs(h, mu, u_s, c_roll, 0.0, eps, np.stack([x, x], axis=1),
+                            c_bl=c_bl)
+        np.testing.assert_allclose(dx2[:, 0], dx, rtol=1e-14, atol=1e-300)
 
 
 def test_creep_law_shape_derived():
@@ -263,8 +298,8 @@ def test_collapsing_steps_are_a_status(monkeypatch):
 
     rhs = ed._rhs
 
-    def chatter(*args):
-        dx, F_z, n = rhs(*args)
+    def chatter(*args, **kw):
+        dx, F_z, n = rhs(*args, **kw)
         x = args[-1]
         if np.ndim(x[0]) == 0:
             dx = dx.copy()

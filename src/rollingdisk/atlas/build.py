@@ -50,7 +50,10 @@ __all__ = ["AtlasResult", "ATLAS_FILES", "build_atlas", "steady_trajectory"]
 ATLAS_FILES = ("thresholds.json", "existence.png", "stability.png", "varpi2.png",
                "all_omega30.png", "motion_stable.png", "motion_stable.gif",
                "motion_unstable.png", "motion_unstable.gif", "exact.png", "euler_disk.png",
-               "euler_disk.json", "index.html")
+               "euler_disk.json", "euler_disk_chirp.png", "euler_disk.wav", "index.html")
+#: The atlas's sound of Euler's disk: the last seconds of the run in real time, at a rate
+#: that keeps the file near 350 KB (the whirr ends below 200 Hz on the toy).
+EULER_SOUND = {"rate": 22050, "speed": 1.0, "max_seconds": 8.0}
 
 
 @dataclass(frozen=True)
@@ -323,7 +326,9 @@ def _motion_steps(disk, out, chosen, *, quick, pr, files, dpi, euler) -> dict:
             raise RuntimeError(f"the Euler's disk process ended with exit code "
                                f"{euler.exitcode}")
         motions["euler_disk"] = json.loads((out / "euler_disk.json").read_text())
-        files += [out / "euler_disk.png", out / "euler_disk.json"]
+        files += [out / "euler_disk.png", out / "euler_disk_chirp.png", out / "euler_disk.json"]
+        if (out / "euler_disk.wav").is_file():
+            files.append(out / "euler_disk.wav")
         ed = motions["euler_disk"]
         pr.done(f"{ed['end']} at {ed['t_end_s']:.4g} s")
         for proc in helpers:
@@ -432,13 +437,16 @@ def _animate_in_child(traj, path, kw):
 
 def _euler_disk_in_child(out: Path, quick: bool, dpi: int, disk: Disk | None = None):
     """The Euler's-disk helper's body: the toy run to its end (``quick``: started at
-    ``alpha0 = 0.05``, a short run), ``euler_disk.png`` and ``euler_disk.json`` in ``out``
-    (the atlas's temporary folder; the JSON last, as the sign that both are whole).  The
-    toy is ``disk`` when it has a radius and a mass, else the commercial Euler's disk."""
+    ``alpha0 = 0.05``, a short run), ``euler_disk.png``, the whirr's frequency
+    ``euler_disk_chirp.png``, its sound ``euler_disk.wav`` (not when ``quick``) and
+    ``euler_disk.json`` in ``out`` (the atlas's temporary folder; the JSON last, as the sign
+    that the others are whole; its ``"sound"`` names the WAV).  The toy is ``disk`` when it
+    has a radius and a mass, else the commercial Euler's disk."""
     from matplotlib.figure import Figure
 
     from rollingdisk.friction.euler_disk import EulerDisk, run_euler_disk
     from rollingdisk.plotting.plots import plot_euler_disk
+    from rollingdisk.plotting.sound import chirp, plot_chirp_frequency, sound_window, write_wav
 
     _quiet_signals()
     alpha0 = 0.05 if quick else 0.3
@@ -450,8 +458,17 @@ def _euler_disk_in_child(out: Path, quick: bool, dpi: int, disk: Disk | None = N
     fig = Figure(figsize=(10.0, 4.2))
     plot_euler_disk(result, fig)  # title: plots.euler_disk_title, symbols with units
     fig.savefig(out / "euler_disk.png", dpi=dpi)
-    (out / "euler_disk.json").write_text(json.dumps(result.summary(), indent=2,
-                                                    allow_nan=False))
+    snd = EULER_SOUND
+    fig = Figure(figsize=(6.4, 3.6))
+    plot_chirp_frequency(result, fig, rate=snd["rate"], speed=snd["speed"],
+                         max_seconds=snd["max_seconds"])
+    fig.savefig(out / "euler_disk_chirp.png", dpi=dpi)
+    summary = result.summary()
+    if not quick:
+        write_wav(out / "euler_disk.wav", chirp(result, **snd), snd["rate"])
+        t0, t1 = sound_window(result, snd["speed"], snd["max_seconds"])
+        summary["sound"] = {"file": "euler_disk.wav", **snd, "window_s": [t0, t1]}
+    (out / "euler_disk.json").write_text(json.dumps(summary, indent=2, allow_nan=False))
 
 
 def _thresholds_si(disk) -> dict:
@@ -583,7 +600,26 @@ t<sub>0</sub> = {_fmt(ed['t0_s'])} s, beside those of the adiabatic decay along 
 family (an exponent has no unit):</p>
 <div class="scroll"><table><tr><th>quantity</th><th>fitted</th><th>predicted</th></tr>
 {rows}</table></div>
-{_img("euler_disk.png", "Euler's disk: tilt, precession rate and contact-point speed")}"""
+{_img("euler_disk.png", "Euler's disk: tilt, precession rate and contact-point speed")}
+{_sound_block(ed)}"""
+
+
+def _sound_block(ed: dict) -> str:
+    """The whirr under the section "Euler's disk": the frequency plot, the sound (when the
+    run wrote one) and where the comparison of the dissipation laws is."""
+    snd = ed.get("sound")
+    audio = ""
+    if snd:
+        t0, t1 = snd["window_s"]
+        audio = (f'<p>Listen: the last {t1 - t0:.3g} s of the run in real time '
+                 f'(<code>rollingdisk euler-disk --sound chirp.wav</code>).</p>\n'
+                 f'<audio controls src="{html.escape(snd["file"])}"></audio>\n')
+    return f"""<p>The whirr: the contact point runs round its circle at the precession rate
+&Omega;, so the toy sounds at &Omega;/2&pi;, rising to the end. The spin-down under each
+dissipation law alone (rolling resistance, the squeeze film, the boundary layer) and the
+toy's mix, with their exponents, is compared in <code>docs/friction.md</code>
+(<code>docs/gallery/euler_disk_laws.png</code>).</p>
+{audio}{_img("euler_disk_chirp.png", "the whirr's frequency against the time to the end")}"""
 
 
 def _units_paragraph(h) -> str:

@@ -3,6 +3,8 @@ the exponents near the end fitted and predicted (docs/friction.md).
 
     $ rollingdisk euler-disk
     $ rollingdisk euler-disk --air --out euler --json
+    $ rollingdisk euler-disk --air boundary-layer   # Bildsten's law instead of the film
+    $ rollingdisk euler-disk --sound chirp.wav --sound-speed 4   # the whirr, 4x faster
     $ rollingdisk euler-disk --disk euro-1          # a 1-euro coin spun like the toy
     $ rollingdisk euler-disk --radius 5cm --thickness 1cm --mass 600g --rolling-resistance 20um
 """
@@ -25,8 +27,9 @@ from rollingdisk.cli._format import disk_line, with_si
 
 
 def configure(sub):
-    from rollingdisk.friction.euler_disk import AIR_VISCOSITY, EulerDisk
+    from rollingdisk.friction.euler_disk import AIR_DENSITY, AIR_LAWS, AIR_VISCOSITY, EulerDisk
     from rollingdisk.plotting.reports import EULER_DISK_FILES
+    from rollingdisk.plotting.sound import MAX_SECONDS, RATE
 
     toy = EulerDisk()
     p = sub.add_parser(
@@ -35,8 +38,9 @@ def configure(sub):
         "12.7 mm, 0.45 kg; or any disk with a physical size and mass: --disk NAME, or "
         "--radius/--diameter with --thickness and --mass), started on its spin-in-place "
         "steady motion and run with creep friction and rolling resistance (and, with --air, "
-        "Moffatt's air film) until it falls flat, lifts off or comes to rest; exponents "
-        "near the end fitted and predicted (docs/friction.md).")
+        "air drag: Moffatt's squeeze film or Bildsten's boundary layer) until it falls "
+        "flat, lifts off or comes to rest; exponents near the end fitted and predicted "
+        "(docs/friction.md); --sound writes its whirr as a WAV file.")
     g = add_disk_options(p)
     g.description = ("Default: the commercial Euler's Disk (--mass and --gravity alone "
                      "change only those). Any other disk needs a physical size and a mass: "
@@ -50,8 +54,25 @@ def configure(sub):
                    help="folder for " + ", ".join(EULER_DISK_FILES) + " (new, empty, or "
                    "written by this command before: it is replaced as a whole)")
     p.add_argument("--json", action="store_true", help="print the summary as JSON")
-    p.add_argument("--air", action="store_true",
-                   help=f"Moffatt's air film, air viscosity {AIR_VISCOSITY:g} Pa s")
+    p.add_argument("--air", nargs="?", const="film", default=None, choices=AIR_LAWS,
+                   metavar="{" + ",".join(AIR_LAWS) + "}",
+                   help=f"air drag, air viscosity {AIR_VISCOSITY:g} Pa s: Moffatt's squeeze "
+                   "film (bare --air, or --air film; Phi ~ Omega^2/alpha) or Bildsten's "
+                   f"boundary layer (--air boundary-layer, density {AIR_DENSITY:g} kg/m^3; "
+                   "Phi ~ Omega^(5/2), valid above alpha ~ 5e-3 for the toy)")
+    p.add_argument("--sound", default=None, metavar="WAV",
+                   help="write the whirr as a WAV file (16-bit mono): a tone at the contact "
+                   "point's precession frequency Omega/2pi along the run")
+    p.add_argument("--sound-speed", dest="sound_speed",
+                   type=real("sound_speed", low=0.0, low_open=True), default=1.0,
+                   metavar="FACTOR",
+                   help="time compression of --sound (1: real time; 4: four times faster, "
+                   "the pitch kept) (default 1)")
+    p.add_argument("--sound-seconds", dest="sound_seconds",
+                   type=real("sound_seconds", low=0.0, low_open=True), default=MAX_SECONDS,
+                   metavar="S",
+                   help=f"longest sound in seconds: a longer run keeps its end (default "
+                   f"{MAX_SECONDS:g}; sample rate {RATE} Hz)")
     p.add_argument("--quiet", action="store_true", help="no progress bar on stderr")
     p.add_argument("--mu", type=real("mu", low=0.0), default=toy.mu,
                    help=f"friction coefficient at saturation, dimensionless (default "
@@ -81,13 +102,17 @@ def configure(sub):
 def run(args) -> int:
     from rollingdisk.friction.euler_disk import AIR_VISCOSITY, run_euler_disk
     from rollingdisk.plotting.reports import EULER_DISK_FILES, write_euler_disk
-    from rollingdisk.util.files import check_replaceable
+    from rollingdisk.plotting.sound import chirp, write_wav
+    from rollingdisk.util.files import check_replaceable, check_writable
     from rollingdisk.util.progress import ProgressBar
 
     toy = _toy(args, dict(mu=args.mu, creep=args.creep, alpha0=args.alpha0,
-                          air_viscosity=AIR_VISCOSITY if args.air else None))
+                          air_viscosity=AIR_VISCOSITY if args.air else None,
+                          air_law=args.air or "film"))
     if args.out is not None:
         check_replaceable(args.out, EULER_DISK_FILES, name="--out")  # before the work
+    if args.sound is not None:
+        check_writable(args.sound, name="--sound")  # before the work
     bar = ProgressBar(quiet=args.quiet)
     try:
         result = run_euler_disk(toy, max_steps=args.max_steps,
@@ -98,12 +123,18 @@ def run(args) -> int:
     if args.out is not None:
         write_euler_disk(result, args.out)
         summary["out"] = args.out
+    if args.sound is not None:
+        write_wav(args.sound, chirp(result, speed=args.sound_speed,
+                                    max_seconds=args.sound_seconds))
+        summary["sound"] = args.sound
     if args.json:
         print(json.dumps(summary, indent=2, allow_nan=False))
         return 0
     _print(result)
     if args.out is not None:
         print(f"  wrote {args.out}")
+    if args.sound is not None:
+        print(f"  wrote {args.sound}")
     return 0
 
 

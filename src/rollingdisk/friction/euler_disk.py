@@ -18,8 +18,11 @@ falls flat, lifts off or comes to rest.  Three dissipative terms:
   but smooth ODE (no mode switching), integrated by LSODA (stiff/non-stiff switching);
 * **rolling resistance** ``M_h = -c F_z omega_h / sqrt(|omega_h|^2 + eps^2)``: the model of
   :class:`rollingdisk.RollingResistance`, smoothed below ``|omega_h| ~ eps``;
-* optionally **Moffatt's air film**, :class:`rollingdisk.AirDrag` with ``c`` from the air
-  viscosity (Moffatt, Nature 404 (2000) 833).
+* optionally **air**: Moffatt's squeeze film, :class:`rollingdisk.AirDrag` with ``c`` from
+  the air viscosity (Moffatt, Nature 404 (2000) 833; the derived constant ``K = 1.28113``),
+  or Bildsten's boundary layer, the moment of
+  :class:`rollingdisk.friction.air_models.BoundaryLayerAirDrag` (Phys. Rev. E 66 (2002)
+  056309; ``c`` from the air's viscosity and density), chosen by ``EulerDisk.air_law``.
 
 Equations: the sliding system of :mod:`rollingdisk.symbolic.coulomb` (the Newton-Euler
 balances (8), (9) with (11)) with the friction force given: its kernel
@@ -47,7 +50,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rollingdisk.friction import coulomb as _cl
-from rollingdisk.friction.air_models import air_coefficient_derived
+from rollingdisk.friction.air_models import BoundaryLayerAirDrag, air_coefficient_derived
 from rollingdisk.model.disk import STANDARD_GRAVITY, Disk
 from rollingdisk.model.geometry import _geometry, _inertia
 from rollingdisk.model.outcomes import AT_REST, EDGE_CONTACT, FELL_FLAT, LIFT_OFF, names
@@ -56,10 +59,15 @@ from rollingdisk.util.errors import ParameterError
 
 __all__ = ["EulerDisk", "EulerDiskResult", "run_euler_disk", "predicted_exponents",
            "creep_factor", "predicted_end_time", "END_KINDS", "AIR_VISCOSITY", "FIT_WINDOW",
-           "FIT_WINDOW_AIR"]
+           "FIT_WINDOW_AIR", "AIR_DENSITY", "AIR_LAWS", "dissipation_laws"]
 
 #: Dynamic viscosity of air at 20 C [Pa s] (CRC Handbook), the default of ``--air``.
 AIR_VISCOSITY = 1.81e-5
+#: Density of air at 20 C and 1 atm [kg/m^3] (CRC Handbook), for the boundary-layer law.
+AIR_DENSITY = 1.204
+#: The air laws of :class:`EulerDisk`: Moffatt's squeeze film (``Phi ~ Omega^2 / alpha``)
+#: and Bildsten's boundary layer (``Phi ~ Omega^(5/2)``), see ``docs/errata-models.md``.
+AIR_LAWS = ("film", "boundary-layer")
 #: How a run can end (names of :mod:`rollingdisk.model.outcomes`): the three physical ends,
 #: and edge contact (contact passes to the other rim edge, theta = 0, outside the model) --
 #: each with status "completed".
@@ -104,12 +112,18 @@ class EulerDisk:
         so that the toy runs for about 100 s, the spin time quoted for it; not measured
         from a ring-down.
     air_viscosity : float or None
-        Air viscosity [Pa s] for Moffatt's film (``>= 0``); ``None`` (default) for no air.
+        Air viscosity [Pa s] (``>= 0``); ``None`` (default) for no air.
     alpha0 : float
         Initial tilt ``alpha0 = pi/2 - theta0`` in ``(0, pi/2)`` rad; 0.3.
     omega_eps : float
         Smoothing ``eps > 0`` of the rolling resistance near ``omega_h = 0`` (units of
         ``sqrt(g/a)``); 1e-6.
+    air_law : {"film", "boundary-layer"}
+        With air on: Moffatt's squeeze film (:attr:`c_air`, ``|P| = c Omega^2 / sin
+        alpha``; default) or Bildsten's boundary layer (:attr:`c_boundary_layer`, ``|P| = c
+        |Omega|^(5/2)``, valid above the crossover tilt ``alpha_c``, 4.8e-3 for the toy).
+    air_density : float
+        Air density [kg/m^3], ``> 0``, for the boundary layer; 1.204 (air at 20 C).
 
     A toy of any other size: :meth:`from_disk` (e.g. a disk of
     :func:`rollingdisk.model.units.disk_from_options`).
@@ -131,9 +145,12 @@ class EulerDisk:
     air_viscosity: float | None = None
     alpha0: float = 0.3
     omega_eps: float = 1e-6
+    air_law: str = "film"
+    air_density: float = AIR_DENSITY
 
     def __post_init__(self):
-        for name in ("radius", "thickness", "mass", "gravity", "creep", "omega_eps"):
+        for name in ("radius", "thickness", "mass", "gravity", "creep", "omega_eps",
+                     "air_density"):
             object.__setattr__(self, name, check_real(name, getattr(self, name), low=0.0,
                                                       low_open=True))
         for name in ("mu", "rolling_resistance"):
@@ -144,6 +161,9 @@ class EulerDisk:
         object.__setattr__(self, "alpha0", check_real("alpha0", self.alpha0, low=0.0,
                                                       high=math.pi / 2, low_open=True,
                                                       high_open=True))
+        if not isinstance(self.air_law, str) or self.air_law not in AIR_LAWS:
+            raise ParameterError(f"air_law must be one of {', '.join(AIR_LAWS)}, got "
+                                 f"{self.air_law!r}")
 
     @classmethod
     def from_disk(cls, disk: Disk, **parameters) -> EulerDisk:
@@ -189,20 +209,33 @@ class EulerDisk:
         (m g^(1/2))`` with ``K`` = 1.28113, the squeeze film under the disk solved from the
         Reynolds equation (:data:`rollingdisk.friction.air_models.FILM_CONSTANT`); Moffatt's
         shear estimate ``K = 2 pi`` is 4.90 times larger (``docs/errata-models.md``).  0
-        without air."""
-        if not self.air_viscosity:
+        without air or with the boundary-layer law."""
+        if not self.air_viscosity or self.air_law != "film":
             return 0.0
         return air_coefficient_derived(self.air_viscosity, self.radius, self.mass,
                                        self.gravity)
 
+    @property
+    def c_boundary_layer(self) -> float:
+        """Coefficient ``c`` of :class:`~rollingdisk.friction.air_models.BoundaryLayerAirDrag`
+        (``|P| = c |Omega|^(5/2)``), ``C sqrt(mu_air rho_air) a^(9/4) / (m g^(1/4))``, ``C =
+        pi`` (:meth:`~rollingdisk.friction.air_models.BoundaryLayerAirDrag.from_si`); 0
+        without air or with the film law."""
+        if not self.air_viscosity or self.air_law != "boundary-layer":
+            return 0.0
+        return BoundaryLayerAirDrag.from_si(self.air_viscosity, self.air_density, self.radius,
+                                            self.mass, self.gravity).c
+
     def as_dict(self) -> dict:
-        """The parameters, plus ``h``, ``time_unit_s`` and ``c_air``."""
+        """The parameters, plus ``h``, ``time_unit_s``, ``c_air`` and
+        ``c_boundary_layer``."""
         return {"radius_m": self.radius, "thickness_m": self.thickness, "mass_kg": self.mass,
                 "gravity": self.gravity, "mu": self.mu, "creep": self.creep,
                 "rolling_resistance": self.rolling_resistance,
                 "air_viscosity": self.air_viscosity, "alpha0": self.alpha0,
-                "omega_eps": self.omega_eps, "h": self.h, "time_unit_s": self.time_unit,
-                "c_air": self.c_air}
+                "omega_eps": self.omega_eps, "air_law": self.air_law,
+                "air_density": self.air_density, "h": self.h, "time_unit_s": self.time_unit,
+                "c_air": self.c_air, "c_boundary_layer": self.c_boundary_layer}
 
 
 @dataclass(frozen=True)
@@ -338,7 +371,8 @@ class EulerDiskResult:
         return {"status": self.status, "end": self.end, "message": self.message,
                 "mu": self.toy.mu, "creep": self.toy.creep,
                 "rolling_resistance": self.toy.rolling_resistance,
-                "air_viscosity_si": self.toy.air_viscosity, "alpha0": self.toy.alpha0}
+                "air_viscosity_si": self.toy.air_viscosity, "air_law": self.toy.air_law,
+                "alpha0": self.toy.alpha0}
 
     def to_xarray(self, si: bool | None = None):
         """The run as an ``xarray.Dataset`` along ``t`` (every accepted step), ``units``
@@ -382,6 +416,37 @@ class EulerDiskResult:
                            note=self.message)
 
 
+def dissipation_laws(toy: EulerDisk | None = None) -> dict[str, EulerDisk]:
+    """The same toy with each dissipation law alone, and its mix: ``"rolling resistance"``
+    (the toy's, no air), ``"squeeze film"`` and ``"boundary layer"`` (air at 20 C, no
+    rolling resistance) and ``"rolling resistance + film"`` (``--air``).  Creep friction
+    stays on in all four (it dissipates little, see ``docs/friction.md``).
+
+    Examples
+    --------
+    >>> list(dissipation_laws())[1]
+    'squeeze film'
+    """
+    import dataclasses
+
+    from rollingdisk.util.errors import ParameterTypeError
+
+    toy = EulerDisk() if toy is None else toy
+    if not isinstance(toy, EulerDisk):
+        raise ParameterTypeError(f"toy must be an EulerDisk, got {type(toy).__name__}")
+    c = toy.rolling_resistance
+    air = toy.air_viscosity or AIR_VISCOSITY
+    return {"rolling resistance": dataclasses.replace(toy, air_viscosity=None),
+            "squeeze film": dataclasses.replace(toy, rolling_resistance=0.0,
+                                                air_viscosity=air, air_law="film"),
+            "boundary layer": dataclasses.replace(toy, rolling_resistance=0.0,
+                                                  air_viscosity=air,
+                                                  air_law="boundary-layer"),
+            "rolling resistance + film": dataclasses.replace(toy, rolling_resistance=c,
+                                                             air_viscosity=air,
+                                                             air_law="film")}
+
+
 #: Variables of :meth:`EulerDiskResult.to_xarray`: name -> (kind, long name).
 EULER_VARIABLES = {
     "t": ("time", "time"),
@@ -408,9 +473,10 @@ def creep_factor(slip, u_s):
                     1.0 / np.where(s < 1.0, 1.0, slip))[()]
 
 
-def _rhs(h, mu, u_s, c_roll, c_air, eps, x):
+def _rhs(h, mu, u_s, c_roll, c_air, eps, x, c_bl=0.0):
     """Right-hand side on the reduced state ``x = [v_Cx, v_Cy, theta, omega1, omega2,
-    omega3, D_slip, D_roll, D_air]``; returns ``(dx, F_z, |u|)``.
+    omega3, D_slip, D_roll, D_air]``; returns ``(dx, F_z, |u|)``.  ``c_air``: the squeeze
+    film's coefficient, ``c_bl``: the boundary layer's (at most one of them non-zero).
 
     ``v_Cx, v_Cy``: velocity of C in Cxyz; ``D_*``: energy dissipated by each term.
     Element-wise: ``x`` may be a (9,) vector (the integrator) or a (9, N) array (the
@@ -428,7 +494,12 @@ def _rhs(h, mu, u_s, c_roll, c_air, eps, x):
     # air film, rollingdisk.AirDrag: M = -c omega3 e_zeta / cos^3(theta), e_zeta =
     # (0, -sin theta, cos theta); rolling resistance, rollingdisk.RollingResistance
     # smoothed: M1_h = -c omega_h / sqrt(|omega_h|^2 + eps^2)
-    ka = -c_air * w3 / (c * c * c)
+    # boundary layer, BoundaryLayerAirDrag: M = -c |Omega|^(1/2) Omega e_zeta / cos(theta)
+    if c_bl:
+        Om = w3 / c  # eq. (2)
+        ka = -c_bl * np.sqrt(np.abs(Om)) * Om / c
+    else:
+        ka = -c_air * w3 / (c * c * c)
     wx = w1
     wy = w2 * c - w3 * s
     nh2 = wx * wx + wy * wy
@@ -440,7 +511,7 @@ def _rhs(h, mu, u_s, c_roll, c_air, eps, x):
     Om = w3 / c  # eq. (2)
     P_slip = F_x * u_x + F_y * u_y
     P_roll = kr * F_z * nh2
-    P_air = ka * w3  # omega . M = -c omega3^2 / cos^3(theta)
+    P_air = ka * w3  # omega . M = -c omega3^2 / cos^3(theta) (film), -c |Omega|^(5/2) (layer)
     dx = np.array([F_x + v_Cy * Om,  # eq. (8)_1 in the turning frame Cxyz
                    F_y - v_Cx * Om,  # eq. (8)_2
                    w1, d1, d2, d3,  # eq. (2), (9)
@@ -498,7 +569,8 @@ def _family(h, alpha):
 
 def _family_power(toy: EulerDisk, alpha):
     """Dissipated power ``|P|`` on the family (``F_z = 1``, no slip): rolling resistance
-    ``c |omega_h|`` and air.
+    ``c |omega_h|`` and air (the film's ``c Omega^2 / sin(alpha)`` or the boundary layer's
+    ``c Omega^(5/2)``).
 
     The rolling resistance is taken unsmoothed: its smoothing changes the power by a
     factor ``1 - (eps/|omega_h|)^2/2``, less than 1e-8 in the toy's fit window, but it
@@ -508,6 +580,8 @@ def _family_power(toy: EulerDisk, alpha):
     P = toy.rolling_resistance * wh
     if toy.c_air:  # omega3^2 / cos^3(theta) = Omega^2 / sin(alpha), no underflow
         P += toy.c_air * Om * Om / math.sin(alpha)
+    if toy.c_boundary_layer:
+        P += toy.c_boundary_layer * Om * Om * np.sqrt(Om)
     return P
 
 
@@ -526,6 +600,11 @@ def _decay_integrand(toy: EulerDisk):
     return integrand
 
 
+def _no_dissipation(toy: EulerDisk) -> bool:
+    """True if the family loses no energy (no rolling resistance, no air)."""
+    return toy.rolling_resistance == 0.0 and toy.c_air == 0.0 and toy.c_boundary_layer == 0.0
+
+
 def predicted_end_time(toy: EulerDisk, alpha_end: float = 1e-3) -> tuple[float, float]:
     """The adiabatic decay along the steady family from ``alpha0``: the time it reaches
     ``alpha_end`` and the time ``t0`` it reaches ``alpha = 0`` (units ``sqrt(a/g)``).
@@ -535,7 +614,7 @@ def predicted_end_time(toy: EulerDisk, alpha_end: float = 1e-3) -> tuple[float, 
     earlier.  ``(inf, inf)`` without dissipation."""
     from scipy.integrate import quad
 
-    if toy.rolling_resistance == 0.0 and toy.c_air == 0.0:
+    if _no_dissipation(toy):
         return math.inf, math.inf
     f = _decay_integrand(toy)
     tail = quad(f, 0.0, math.sqrt(alpha_end), epsabs=0.0, epsrel=1e-11, limit=400)[0]
@@ -553,7 +632,8 @@ def predicted_exponents(toy: EulerDisk, window=(2e-3, 2e-2), n: int = 40) -> dic
     ``a^(-1/2)`` end point of rolling resistance); the exponents are least-squares slopes
     over ``n`` tilts spaced evenly in ``log alpha`` across ``window``.  With rolling
     resistance alone they tend to ``2, -1, -1`` as the window shrinks to 0 (``E - E_inf ~
-    alpha``, ``|omega_h| ~ alpha^(1/2)``), with Moffatt's film to ``1/3, -1/6, -1/6``.
+    alpha``, ``|omega_h| ~ alpha^(1/2)``), with Moffatt's film to ``1/3, -1/6, -1/6``, with
+    Bildsten's boundary layer (``P ~ Omega^(5/2) ~ alpha^(-5/4)``) to ``4/9, -2/9, -2/9``.
     """
     from scipy.integrate import quad
 
@@ -561,7 +641,7 @@ def predicted_exponents(toy: EulerDisk, window=(2e-3, 2e-2), n: int = 40) -> dic
     if not (0.0 < lo < hi < toy.alpha0):
         raise ParameterError(f"window must satisfy 0 < lo < hi < alpha0 = {toy.alpha0:g}, "
                              f"got {window!r}")
-    if toy.rolling_resistance == 0.0 and toy.c_air == 0.0:
+    if _no_dissipation(toy):
         return {k: math.nan for k in EXPONENT_NAMES}
     h = toy.h
     integrand = _decay_integrand(toy)
@@ -648,7 +728,7 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
         ``alpha`` range of the exponent fits (and of the prediction); default
         :data:`FIT_WINDOW`, or :data:`FIT_WINDOW_AIR` with air drag on (the air film
         drives the disk off the steady family below ``alpha ~ 0.01``, see
-        ``docs/friction.md``).
+        ``docs/friction.md``; the boundary layer holds above ``alpha_c ~ 5e-3``).
     predict : bool
         Compute the predicted exponents (:func:`predicted_exponents`).
     kick : float
@@ -701,7 +781,8 @@ def _check_run_arguments(toy, alpha_end, t_max, rtol, atol, max_steps, max_wall_
     max_wall_time = check_real("max_wall_time", max_wall_time, low=0.0, low_open=True)
     kick = check_real("kick", kick)
     if fit_window is None:
-        fit_window = FIT_WINDOW_AIR if toy.c_air > 0 else FIT_WINDOW
+        fit_window = (FIT_WINDOW_AIR if toy.c_air > 0 or toy.c_boundary_layer > 0
+                      else FIT_WINDOW)
     lo, hi = (check_real("fit_window[0]", fit_window[0], low=0.0, low_open=True),
               check_real("fit_window[1]", fit_window[1], low=0.0, low_open=True))
     if not lo < hi < toy.alpha0:
@@ -722,6 +803,7 @@ class _ToyRun:
         mu = toy.mu
         u_s = 3.0 * mu / toy.creep if mu > 0 else 1.0  # mu = 0: no friction at all
         self.params = (toy.h, mu, u_s, toy.rolling_resistance, toy.c_air, toy.omega_eps)
+        self.c_bl = toy.c_boundary_layer
         self.last = [1.0]  # F_z of the latest evaluation (near the accepted point) for lift-off
         x0 = _initial_state(toy)
         x0[3] += kick
@@ -731,7 +813,7 @@ class _ToyRun:
         self.log_span = math.log(toy.alpha0 / alpha_end)
         self.end = None
         self.status, self.message = "failed", ""
-        F_z0 = _rhs(*self.params, x0)[1]
+        F_z0 = _rhs(*self.params, x0, c_bl=self.c_bl)[1]
         if F_z0 < 0.0:  # the kick asks for a pull from the plane: no motion in contact at all
             self.end, self.status = "lift-off", "completed"
             self.message = f"lifted off at the start: F_z(0) = {F_z0:.4g} < 0 (eq. 11)"
@@ -741,7 +823,7 @@ class _ToyRun:
         self.side = math.copysign(1.0, x0[2])
 
     def _f(self, t, x):
-        dx, self.last[0], _ = _rhs(*self.params, x)
+        dx, self.last[0], _ = _rhs(*self.params, x, c_bl=self.c_bl)
         return dx
 
     def integrate(self, max_steps, max_wall_time, progress):
@@ -792,10 +874,10 @@ class _ToyRun:
         """Check the ends after an accepted step to state ``x``; True if the run ended
         (``end``, ``status``, ``message`` set, the end located on the step) or the step
         sizes collapsed."""
-        solver, params = self.solver, self.params
+        solver, params, c_bl = self.solver, self.params, self.c_bl
         F_z = self.last[0]
         if F_z < 0.0:  # confirm at the accepted state itself
-            F_z = _rhs(*params, x)[1]
+            F_z = _rhs(*params, x, c_bl=c_bl)[1]
         tiny = solver.t - t_old < 1e-12 * (1.0 + abs(solver.t))
         self.n_short = self.n_short + 1 if tiny else 0
         alpha = math.pi / 2 - abs(x[2])
@@ -811,7 +893,7 @@ class _ToyRun:
             event = lambda z: math.pi / 2 - abs(z[2]) - alpha_end  # noqa: E731
         elif F_z < 0.0:
             self.end, self.message = "lift-off", "lifted off: F_z = 0 (eq. 11)"
-            event = lambda z: _rhs(*params, z)[1]  # noqa: E731
+            event = lambda z: _rhs(*params, z, c_bl=c_bl)[1]  # noqa: E731
         elif math.copysign(1.0, x[2]) != side:
             self.end, self.message = "edge-contact", "theta = 0: the other rim edge touches"
             event = lambda z: z[2] * side  # noqa: E731
@@ -841,7 +923,7 @@ def _result(run, window, predict):
     X = np.array(run.xs)
     XT = X.T  # (9, N): every recorded quantity in one element-wise call
     alpha, Omega, vp = _observables(h, XT)
-    _, fz, us = _rhs(*params, XT)
+    _, fz, us = _rhs(*params, XT, c_bl=run.c_bl)
     E = _energy(h, XT)
     dissipated = {k: X[:, 6 + i] for i, k in enumerate(TERMS)}
     total = E + X[:, 6:].sum(axis=1)
