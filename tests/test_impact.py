@@ -372,7 +372,7 @@ def test_impacts_never_create_energy_and_satisfy_the_law(seed, e, mu, h):
         xt = math.hypot(*xi[:2])
         if xt > 1e-10 * v:  # sliding: opposite to xi_T, on the cone
             assert lt == pytest.approx(mu * Lam[2], rel=1e-12, abs=1e-14)
-            if lt > 0:
+            if lt > 1e-300:  # a subnormal impulse (mu = 5e-324) has no direction to test
                 cosang = -(Lam[:2] @ xi[:2]) / (lt * xt)
                 assert cosang == pytest.approx(1.0, abs=1e-12)
 
