@@ -12,6 +12,11 @@ The disk is in one of two modes (:mod:`rollingdisk.friction.coulomb`):
     ``u . u_ref = 0``, ``u_ref`` the slip direction when the step began, on the smooth
     continuation of the sliding solution): the disk rolls if the rolling friction force
     lies inside the cone ``|F_t| <= mu_s F_z``, else it slides on in the new direction.
+``..., pivot stuck``
+    either mode with the vertical spin ``omega_z`` held at 0 by the pivoting friction
+    (set-valued: ``|M_z| <= c F_z``, issue 22).  Entered when ``omega_z`` reaches 0 (event
+    ``sz omega_z``, ``sz`` its sign on the segment) and the moment that holds it fits in
+    ``c F_z``; left when that moment reaches ``c F_z`` (event ``c F_z - |M_piv|``).
 
 Terminal guards as on the ideal grounds: lift-off (``F_z = 0``, eq. 11), edge contact
 (``theta = 0`` with ``h > 0``), fell flat (``|theta| = pi/2``).
