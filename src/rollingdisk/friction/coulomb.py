@@ -31,12 +31,16 @@ __all__ = ["COULOMB_STATE", "MODE_NAMES", "coulomb_rhs", "coulomb_contact", "cou
 COULOMB_STATE = SMOOTH_STATE
 
 
-#: Integer codes of the two modes of a Coulomb run (``Trajectory.mode``).
+#: Integer codes of the modes of a Coulomb run (``Trajectory.mode``): the contact rolls or
+#: slides (bit 0); bit 1 (:data:`PIVOT_STUCK`) is set while the pivot sticks, the vertical
+#: spin ``omega_z`` held at 0 by the pivoting-friction moment (issue 22).
 ROLLING, SLIDING = 0, 1
+PIVOT_STUCK = 2
+ROLLING_PIVOT_STUCK, SLIDING_PIVOT_STUCK = ROLLING | PIVOT_STUCK, SLIDING | PIVOT_STUCK
 
 
-#: Mode code -> name.
-MODE_NAMES = ("rolling", "sliding")
+#: Mode code -> name (codes 0, 1 as before; 2, 3 the pivot-stuck sub-modes).
+MODE_NAMES = ("rolling", "sliding", "rolling, pivot stuck", "sliding, pivot stuck")
 
 
 def _rolling_solve(h, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z):
@@ -136,19 +140,7 @@ def _coulomb_sliding(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_eps=0.0
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
     cp = np.cos(psi)
     sp = np.sin(psi)
-    u_x, u_y = _slip_velocity(h, y)
-    n = np.sqrt(u_x * u_x + u_y * u_y)
-    r_x = ref_X * cp + ref_Y * sp  # ref in Cxyz
-    r_y = -ref_X * sp + ref_Y * cp
-    if n > u_eps and n > 0.0:
-        sig = 1.0
-        if u_x * r_x + u_y * r_y < 0.0:
-            sig = -1.0
-        e_x = sig * u_x / n
-        e_y = sig * u_y / n
-    else:
-        e_x = r_x
-        e_y = r_y
+    u_x, u_y, e_x, e_y = _friction_direction(h, y, ref_X, ref_Y, u_eps)
     M0x, M0y, M0z, M1x, M1y, M1z = _coulomb_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3)
     d1, d2, d3, F_x, F_y, F_z = _sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3,
                                                M0x, M0y, M0z, M1x, M1y, M1z)
@@ -157,6 +149,24 @@ def _coulomb_sliding(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_eps=0.0
           F_x * cp - F_y * sp, F_x * sp + F_y * cp,  # eq. (8), inertial components
           w3 / c, w1, w2 - w3 * p, d1, d2, d3)  # eq. (2)
     return dy, F_x, F_y, F_z, F_x * u_x + F_y * u_y, P1, P2, P3
+
+
+def _friction_direction(h, y, ref_X, ref_Y, u_eps):
+    """``(u_x, u_y, e_x, e_y)``: the slip velocity and the friction direction ``e`` (Cxyz)
+    of :func:`_coulomb_sliding` (``sgn(u . ref) u/|u|``, or ``ref`` where ``|u| <= u_eps``)."""
+    psi = y[4]
+    cp = np.cos(psi)
+    sp = np.sin(psi)
+    u_x, u_y = _slip_velocity(h, y)
+    n = np.sqrt(u_x * u_x + u_y * u_y)
+    r_x = ref_X * cp + ref_Y * sp  # ref in Cxyz
+    r_y = -ref_X * sp + ref_Y * cp
+    if n > u_eps and n > 0.0:
+        sig = 1.0
+        if u_x * r_x + u_y * r_y < 0.0:
+            sig = -1.0
+        return u_x, u_y, sig * u_x / n, sig * u_y / n
+    return u_x, u_y, r_x, r_y
 
 
 def _coulomb_energy(h, y):
@@ -180,6 +190,114 @@ def _rolling_velocity(h, y):
     return v_Cx * cp - v_Cy * sp, v_Cx * sp + v_Cy * cp
 
 
+# ----------------------------------------------------- set-valued pivoting friction (issue 22)
+# The pivot moment -c F_z sgn(omega_z) is set-valued at omega_z = 0: there it is whatever
+# keeps omega_z = 0, as long as |M_piv| <= c F_z ("pivot stuck", rollingdisk.symbolic.coulomb.
+# derive_pivot_stuck).  The kernels take a pivot state ``sz``: +1 or -1, the moment
+# -c F_z sz (the smooth continuation of -c F_z sgn(omega_z) through omega_z = 0, on which the
+# hybrid driver locates the zero), or 0, stuck.
+def _omega_z(theta, w2, w3):
+    """Vertical component of the angular velocity (Cxyz), ``omega2 sin + omega3 cos``."""
+    return w2 * np.sin(theta) + w3 * np.cos(theta)
+
+
+def _stuck_correction(theta, w1, w2, w3, d2, d3, r2, r3):
+    """The pivot moment ``M_piv`` that makes ``d omega_z/dt = 0`` when a unit vertical
+    moment changes ``(domega2, domega3)`` by ``(r2, r3)``: ``d omega_z/dt = domega2 sin +
+    domega3 cos + omega1 (omega2 cos - omega3 sin)`` is affine in ``M_piv``."""
+    s = np.sin(theta)
+    c = np.cos(theta)
+    dwz = d2 * s + d3 * c + w1 * (w2 * c - w3 * s)
+    return -dwz / (r2 * s + r3 * c)
+
+
+def _rolling_stuck_solve(h, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z):
+    """Rolling with the pivot stuck: :func:`_rolling_solve` with the extra vertical moment
+    ``M_piv`` that holds ``d omega_z/dt = 0``.  ``d omega1/dt``, ``F_y`` and ``F_z`` do not
+    depend on ``M_z``; ``(domega2, domega3)`` respond to it by ``(s a22 + h~ c, a11 c +
+    h~ s)/det`` (the 2x2 system of (9)_2,3, whose right sides get ``(s, c) M_z``).
+    Returns ``(dw1, dw2, dw3, F_x, F_y, F_z, M_piv)``."""
+    d1, d2, d3, F_x, F_y, F_z = _rolling_solve(h, theta, w1, w2, w3,
+                                               M0x, M0y, M0z, M1x, M1y, M1z)
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    k1 = _inertia(h)[0]
+    a11 = 1.5  # k2 + 1
+    a22 = k1 + ht * ht
+    det = a11 * a22 - ht * ht
+    r2 = (s * a22 + ht * c) / det
+    r3 = (a11 * c + ht * s) / det
+    L = _stuck_correction(theta, w1, w2, w3, d2, d3, r2, r3)
+    return d1, d2 + r2 * L, d3 + r3 * L, F_x + (r2 - ht * r3) * L, F_y, F_z, L
+
+
+def _sliding_stuck_solve(h, mu, e_x, e_y, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z):
+    """Sliding with the pivot stuck: :func:`_sliding_solve` with the extra vertical moment
+    ``M_piv`` that holds ``d omega_z/dt = 0`` (``F`` and ``d omega1/dt`` do not depend on
+    ``M_z``; ``(domega2, domega3)`` respond by ``(s/k2, c/k1)``).  Returns ``(dw1, dw2,
+    dw3, F_x, F_y, F_z, M_piv)``."""
+    d1, d2, d3, F_x, F_y, F_z = _sliding_solve(h, mu, e_x, e_y, theta, w1, w2, w3,
+                                               M0x, M0y, M0z, M1x, M1y, M1z)
+    s = np.sin(theta)
+    c = np.cos(theta)
+    r2 = s / 0.5
+    r3 = c / _inertia(h)[0]
+    L = _stuck_correction(theta, w1, w2, w3, d2, d3, r2, r3)
+    return d1, d2 + r2 * L, d3 + r3 * L, F_x, F_y, F_z, L
+
+
+def _pivot_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3, sz):
+    """``M0, M1`` of :func:`_coulomb_moments` with the pivot term ``-c sz`` (``sz = 0``:
+    none, the stuck pivot's moment is an unknown)."""
+    M0x, M0y, M0z, M1x, M1y, _ = _coulomb_moments(c_roll, 0.0, c_air, theta, w1, w2, w3)
+    return M0x, M0y, M0z, M1x, M1y, -c_pivot * sz
+
+
+def _coulomb_rolling_pivot(h, c_roll, c_pivot, c_air, y, sz):
+    """Rolling mode with pivot state ``sz`` (+1, -1: moment ``-c F_z sz``; 0: stuck):
+    ``(dy[0:10], F_x, F_y, F_z, P_roll, P_pivot, P_air, M_piv)``, ``M_piv`` the pivot
+    moment about the vertical and ``P_pivot = omega_z M_piv`` its power (0 while stuck)."""
+    psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    M = _pivot_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3, sz)
+    if sz == 0.0:
+        d1, d2, d3, F_x, F_y, F_z, L = _rolling_stuck_solve(h, theta, w1, w2, w3, *M)
+    else:
+        d1, d2, d3, F_x, F_y, F_z = _rolling_solve(h, theta, w1, w2, w3, *M)
+        L = M[5] * F_z
+    cp = np.cos(psi)
+    sp = np.sin(psi)
+    v_Cx = w2 - ht * w3  # eq. (37)
+    v_Cy = w1 * z_P
+    P1, _, P3 = _coulomb_powers(c_roll, 0.0, c_air, theta, w1, w2, w3, F_z)
+    dy = (v_Cx * cp - v_Cy * sp, v_Cx * sp + v_Cy * cp,  # eq. (1)
+          F_x * cp - F_y * sp, F_x * sp + F_y * cp,  # eq. (8), inertial components
+          w3 / c, w1, w2 - w3 * p, d1, d2, d3)  # eq. (2)
+    return dy, F_x, F_y, F_z, P1, _omega_z(theta, w2, w3) * L, P3, L
+
+
+def _coulomb_sliding_pivot(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_eps, sz):
+    """Sliding mode (friction direction as :func:`_coulomb_sliding`) with pivot state
+    ``sz``: ``(dy[0:10], F_x, F_y, F_z, P_slip, P_roll, P_pivot, P_air, M_piv)``."""
+    psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    u_x, u_y, e_x, e_y = _friction_direction(h, y, ref_X, ref_Y, u_eps)
+    M = _pivot_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3, sz)
+    if sz == 0.0:
+        d1, d2, d3, F_x, F_y, F_z, L = _sliding_stuck_solve(h, mu_k, e_x, e_y, theta,
+                                                            w1, w2, w3, *M)
+    else:
+        d1, d2, d3, F_x, F_y, F_z = _sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3, *M)
+        L = M[5] * F_z
+    cp = np.cos(psi)
+    sp = np.sin(psi)
+    P1, _, P3 = _coulomb_powers(c_roll, 0.0, c_air, theta, w1, w2, w3, F_z)
+    dy = (y[2], y[3],  # eq. (1)
+          F_x * cp - F_y * sp, F_x * sp + F_y * cp,  # eq. (8), inertial components
+          w3 / c, w1, w2 - w3 * p, d1, d2, d3)  # eq. (2)
+    return (dy, F_x, F_y, F_z, F_x * u_x + F_y * u_y, P1, _omega_z(theta, w2, w3) * L, P3,
+            L)
+
+
 # ------------------------------------------------------------------- public wrappers
 def _check_coulomb(ground, name: str = "ground"):
     """``ground`` if it is a :class:`Coulomb` value; a ground's name (``"rough"``) is the
@@ -192,11 +310,14 @@ def _check_coulomb(ground, name: str = "ground"):
 
 
 def _check_mode(mode) -> int:
-    if mode in ("rolling", ROLLING) and not isinstance(mode, bool):
-        return ROLLING
-    if mode in ("sliding", SLIDING) and not isinstance(mode, bool):
-        return SLIDING
-    raise ParameterError(f"mode must be 'rolling' or 'sliding', got {mode!r}")
+    """The code of ``mode``: a name of :data:`MODE_NAMES` or its index."""
+    if not isinstance(mode, bool):
+        for code, name in enumerate(MODE_NAMES):
+            if isinstance(mode, str) and mode == name:
+                return code
+            if isinstance(mode, (int, np.integer)) and mode == code:
+                return code
+    raise ParameterError(f"mode must be one of {MODE_NAMES} (or its index), got {mode!r}")
 
 
 def coulomb_rhs(disk: Disk, ground, mode, y, slip_reference=None) -> np.ndarray:
@@ -206,10 +327,13 @@ def coulomb_rhs(disk: Disk, ground, mode, y, slip_reference=None) -> np.ndarray:
     ----------
     disk : Disk
     ground : Coulomb
-    mode : {"rolling", "sliding"}
+    mode : {"rolling", "sliding", "rolling, pivot stuck", "sliding, pivot stuck"}
         Rolling: no slip, the contact force follows from the constraint (eqs. 8, 9, 11, 37)
         with the contact moments of ``ground``; ``X_C, Y_C`` move with the no-slip velocity.
         Sliding: ``F_t = -mu_k F_z u/|u|`` (``u`` from eq. 6), ``F_z`` from eq. (11).
+        "pivot stuck": the pivoting-friction moment is the one that holds the vertical spin
+        ``omega_z`` constant (``d omega_z/dt = 0``; it sticks at ``omega_z = 0``), derived in
+        :func:`rollingdisk.symbolic.coulomb.derive_pivot_stuck`, whatever its size.
     y : array_like, shape (10,)
     slip_reference : (float, float), optional
         Sliding only: the inertial direction used when ``u = 0`` (default: ``(1, 0)``).
@@ -222,12 +346,18 @@ def coulomb_rhs(disk: Disk, ground, mode, y, slip_reference=None) -> np.ndarray:
     g = _check_coulomb(ground)
     y = _as_state("smooth", y)
     cr, cpv, ca = g.coefficients
-    if _check_mode(mode) == ROLLING:
+    code = _check_mode(mode)
+    if code == ROLLING:
         return np.array(_coulomb_rolling(disk.h, cr, cpv, ca, y)[0])
+    if code == ROLLING_PIVOT_STUCK:
+        return np.array(_coulomb_rolling_pivot(disk.h, cr, cpv, ca, y, 0.0)[0])
     rx, ry = (1.0, 0.0) if slip_reference is None else slip_reference
     u = _slip_velocity(disk.h, y)
     if slip_reference is None and (u[0] or u[1]):
         rx, ry = _to_inertial(y[4], *u)
+    if code == SLIDING_PIVOT_STUCK:
+        return np.array(_coulomb_sliding_pivot(disk.h, g.mu_k, cr, cpv, ca, y, rx, ry, 0.0,
+                                               0.0)[0])
     return np.array(_coulomb_sliding(disk.h, g.mu_k, cr, cpv, ca, y, rx, ry)[0])
 
 
@@ -245,23 +375,29 @@ def coulomb_contact(disk: Disk, ground, mode, y) -> dict:
         ``F_x, F_y, F_z`` (contact force in Cxyz, units ``m g``), ``F_t = |(F_x, F_y)|``,
         ``u_x, u_y`` (slip velocity, eq. 6), ``power_slip`` (``v_P . F_t``), and the
         powers ``power_rolling_resistance``, ``power_pivot``, ``power_air`` (``omega . M``
-        of each moment; all powers ``<= 0``, eq. 14).
+        of each moment; all powers ``<= 0``, eq. 14), and ``M_pivot``, the pivoting-friction
+        moment about the vertical (``-c F_z sgn(omega_z)``; in a "pivot stuck" mode the
+        moment that holds ``omega_z``, ``|M_pivot| <= c F_z`` while the pivot sticks).
     """
     _check_disk(disk)
     g = _check_coulomb(ground)
     y = _as_state("smooth", y)
     cr, cpv, ca = g.coefficients
     u_x, u_y = _slip_velocity(disk.h, y)
-    if _check_mode(mode) == ROLLING:
-        _, F_x, F_y, F_z, P1, P2, P3 = _coulomb_rolling(disk.h, cr, cpv, ca, y)
+    code = _check_mode(mode)
+    sz = 0.0 if code & PIVOT_STUCK else float(np.sign(_omega_z(y[5], y[8], y[9])))
+    if sz == 0.0 and not code & PIVOT_STUCK:  # sgn(0) = 0: no pivot moment (as the kernels)
+        sz, cpv = 1.0, 0.0
+    if code & 1 == ROLLING:
+        _, F_x, F_y, F_z, P1, P2, P3, L = _coulomb_rolling_pivot(disk.h, cr, cpv, ca, y, sz)
         P0 = 0.0
     else:
         rx, ry = _to_inertial(y[4], u_x, u_y) if (u_x or u_y) else (1.0, 0.0)
-        _, F_x, F_y, F_z, P0, P1, P2, P3 = _coulomb_sliding(disk.h, g.mu_k, cr, cpv, ca, y,
-                                                            rx, ry)
+        _, F_x, F_y, F_z, P0, P1, P2, P3, L = _coulomb_sliding_pivot(
+            disk.h, g.mu_k, cr, cpv, ca, y, rx, ry, 0.0, sz)
     return {"F_x": F_x, "F_y": F_y, "F_z": F_z, "F_t": float(np.hypot(F_x, F_y)),
             "u_x": u_x, "u_y": u_y, "power_slip": P0, "power_rolling_resistance": P1,
-            "power_pivot": P2, "power_air": P3}
+            "power_pivot": P2, "power_air": P3, "M_pivot": L}
 
 
 def coulomb_energy(disk: Disk, y):

@@ -12,6 +12,11 @@ The disk is in one of two modes (:mod:`rollingdisk.friction.coulomb`):
     ``u . u_ref = 0``, ``u_ref`` the slip direction when the step began, on the smooth
     continuation of the sliding solution): the disk rolls if the rolling friction force
     lies inside the cone ``|F_t| <= mu_s F_z``, else it slides on in the new direction.
+``..., pivot stuck``
+    either mode with the vertical spin ``omega_z`` held at 0 by the pivoting friction
+    (set-valued: ``|M_z| <= c F_z``, issue 22).  Entered when ``omega_z`` reaches 0 (event
+    ``sz omega_z``, ``sz`` its sign on the segment) and the moment that holds it fits in
+    ``c F_z``; left when that moment reaches ``c F_z`` (event ``c F_z - |M_piv|``).
 
 Terminal guards as on the ideal grounds: lift-off (``F_z = 0``, eq. 11), edge contact
 (``theta = 0`` with ``h > 0``), fell flat (``|theta| = pi/2``).
@@ -53,7 +58,7 @@ __all__ = ["simulate_coulomb", "slip_direction", "energy_balance", "DISSIPATION_
 #: Names of the dissipation terms recorded in :attr:`Trajectory.dissipated`.
 DISSIPATION_TERMS = ("slip", "rolling_resistance", "pivot", "air")
 
-ROLLING, SLIDING = _cl.ROLLING, _cl.SLIDING
+ROLLING, SLIDING, PIVOT_STUCK = _cl.ROLLING, _cl.SLIDING, _cl.PIVOT_STUCK
 _NAMES = _cl.MODE_NAMES
 _N_SAMPLE = 9  # points of the dense output at which events are looked for, per step
 #: Slip speed below which sliding keeps the reference direction (the solved initial slip
@@ -64,13 +69,20 @@ U_EPS = 1e-8
 STICK_TOL = 1e-6
 
 
-def _slip_accel(h, mu_k, coeffs, y, e_x, e_y):
+def _slip_accel(h, mu_k, coeffs, y, e_x, e_y, sz=None):
     """Slip acceleration ``du/dt`` (Cxyz) at a state with ``u = 0``, sliding with friction
-    ``-mu_k F_z e`` (``e`` in Cxyz): eq. (6) differentiated along (8), (9), (11)."""
+    ``-mu_k F_z e`` (``e`` in Cxyz): eq. (6) differentiated along (8), (9), (11).  ``sz``:
+    the pivot state (+1, -1, or 0 stuck; ``None``: ``sgn(omega_z)``)."""
     theta, w1, w2, w3 = y[5], y[7], y[8], y[9]
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
-    M = _cl._coulomb_moments(*coeffs, theta, w1, w2, w3)
-    d1, d2, d3, F_x, F_y, F_z = _cl._sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3, *M)
+    if sz is None:
+        M = _cl._coulomb_moments(*coeffs, theta, w1, w2, w3)
+        d1, d2, d3, F_x, F_y, F_z = _cl._sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3,
+                                                       *M)
+    else:
+        M = _cl._pivot_moments(*coeffs, theta, w1, w2, w3, sz)
+        solve = _cl._sliding_stuck_solve if sz == 0.0 else _cl._sliding_solve
+        d1, d2, d3, F_x, F_y, F_z = solve(h, mu_k, e_x, e_y, theta, w1, w2, w3, *M)[:6]
     Om = w3 / c
     v_Cx = w2 - ht * w3  # u = 0
     v_Cy = w1 * z_P
@@ -92,14 +104,16 @@ def slip_direction(disk: Disk, ground: Coulomb, y) -> tuple[float, float] | None
     """
     h = _check_disk(disk).h
     mu_k = _check_coulomb(ground).mu_k
-    coeffs = ground.coefficients
-    y = _as_state("smooth", y)
+    return _slip_direction(h, mu_k, ground.coefficients, _as_state("smooth", y))
 
+
+def _slip_direction(h, mu_k, coeffs, y, sz=None):
+    """:func:`slip_direction` with the pivot state ``sz`` of :func:`_slip_accel`."""
     from scipy.optimize import brentq
 
     def parts(a):
         ex, ey = math.cos(a), math.sin(a)
-        ax, ay = _slip_accel(h, mu_k, coeffs, y, ex, ey)
+        ax, ay = _slip_accel(h, mu_k, coeffs, y, ex, ey, sz)
         return ex * ay - ey * ax, ex * ax + ey * ay
 
     grid = np.linspace(0.0, 2.0 * math.pi, 145)
@@ -144,7 +158,12 @@ def _finite(t, out):
 
 
 class _Run:
-    """One hybrid run: the right-hand sides and event functions of both modes."""
+    """One hybrid run: the right-hand sides and event functions of the modes.
+
+    A mode is ``ROLLING`` or ``SLIDING``, with the bit ``PIVOT_STUCK`` while the pivot
+    sticks.  Outside it the pivot moment is ``-c F_z sz`` with ``sz`` (``self.sz``) the sign
+    of ``omega_z`` on the current segment: the smooth continuation through ``omega_z = 0``,
+    where the driver stops (an event), as the slip reference does for sliding."""
 
     def __init__(self, disk, ground, alpha_min=0.0):
         self.alpha_min = alpha_min
@@ -152,43 +171,52 @@ class _Run:
         self.h = disk.h
         self.g = ground
         self.coeffs = ground.coefficients
+        self.c_pivot = self.coeffs[1]
         self.ref = (1.0, 0.0)  # inertial slip reference direction (sliding)
+        self.sz = 1.0  # sgn(omega_z) on the segment (pivot not stuck)
         self.n_rhs = 0
 
-    def rhs(self, mode):
-        h, g, cf = self.h, self.g, self.coeffs
+    def pivot_state(self, mode):
+        """``sz`` of the kernels: 0 while the pivot sticks, else the segment's sign."""
+        return 0.0 if mode & PIVOT_STUCK else self.sz
 
-        if mode == ROLLING:
-            def f(t, z):
-                self.n_rhs += 1
-                dy, F_x, F_y, F_z, P1, P2, P3 = _cl._coulomb_rolling(h, *cf, z)
-                return _finite(t, np.array([*dy, 0.0, -P1, -P2, -P3]))
-        else:
-            def f(t, z):
-                self.n_rhs += 1
-                dy, F_x, F_y, F_z, P0, P1, P2, P3 = _cl._coulomb_sliding(
-                    h, g.mu_k, *cf, z, self.ref[0], self.ref[1], U_EPS)
-                return _finite(t, np.array([*dy, -P0, -P1, -P2, -P3]))
+    def solve(self, mode, z):
+        """The mode's kernel at ``z``: ``(dy, F_x, F_y, F_z, P_slip, P_roll, P_pivot,
+        P_air, M_piv)``."""
+        h, cf, sz = self.h, self.coeffs, self.pivot_state(mode)
+        if mode & 1 == ROLLING:
+            dy, F_x, F_y, F_z, P1, P2, P3, L = _cl._coulomb_rolling_pivot(h, *cf, z, sz)
+            return dy, F_x, F_y, F_z, 0.0, P1, P2, P3, L
+        return _cl._coulomb_sliding_pivot(h, self.g.mu_k, *cf, z, self.ref[0], self.ref[1],
+                                          U_EPS, sz)
+
+    def rhs(self, mode):
+        def f(t, z):
+            self.n_rhs += 1
+            dy, F_x, F_y, F_z, P0, P1, P2, P3, L = self.solve(mode, z)
+            return _finite(t, np.array([*dy, -P0, -P1, -P2, -P3]))
         return f
 
     def contact(self, mode, z):
-        """``(F_t, F_z, u_ref_component)`` at ``z`` in ``mode``."""
-        h, cf = self.h, self.coeffs
-        if mode == ROLLING:
-            _, F_x, F_y, F_z, *_ = _cl._coulomb_rolling(h, *cf, z)
-            return math.hypot(F_x, F_y), F_z, 0.0
-        _, F_x, F_y, F_z, *_ = _cl._coulomb_sliding(h, self.g.mu_k, *cf, z, *self.ref, U_EPS)
-        u_x, u_y = _cl._slip_velocity(h, z)
-        U_X, U_Y = _cl._to_inertial(z[4], u_x, u_y)
-        return math.hypot(F_x, F_y), F_z, U_X * self.ref[0] + U_Y * self.ref[1]
+        """``(F_t, F_z, u_ref_component, M_piv)`` at ``z`` in ``mode``."""
+        _, F_x, F_y, F_z, *_, L = self.solve(mode, z)
+        if mode & 1 == ROLLING:
+            return math.hypot(F_x, F_y), F_z, 0.0, L
+        U_X, U_Y = _inertial_slip(self.h, z)
+        return math.hypot(F_x, F_y), F_z, U_X * self.ref[0] + U_Y * self.ref[1], L
 
     def events(self, mode, z):
         """Event functions, each crossing from > 0 to <= 0:
-        ``[mode end, lift-off, edge contact, fell flat]``."""
-        F_t, F_z, along = self.contact(mode, z)
-        end = self.g.mu_s * F_z - F_t if mode == ROLLING else along
+        ``[mode end, pivot, lift-off, edge contact, fell flat]``; pivot: ``omega_z`` reaches
+        0 (``sz omega_z``), or, while stuck, the moment holding it reaches ``c F_z``."""
+        F_t, F_z, along, L = self.contact(mode, z)
+        end = self.g.mu_s * F_z - F_t if mode & 1 == ROLLING else along
         theta = z[5]
-        return [end, F_z, theta * self.side if self.h > 0 else 1.0,
+        if mode & PIVOT_STUCK:
+            pivot = self.c_pivot * F_z - abs(L)
+        else:
+            pivot = self.sz * _cl._omega_z(theta, z[8], z[9])
+        return [end, pivot, F_z, theta * self.side if self.h > 0 else 1.0,
                 0.5 * math.pi - abs(theta) - self.alpha_min]
 
 
@@ -398,7 +426,8 @@ class _Hybrid:
         self.wall0 = time.perf_counter()
         self.t = t0
         self.z = np.concatenate([y, np.zeros(4)])
-        self.mode = self._initial_mode()
+        self.run.sz = -1.0 if _cl._omega_z(y[5], y[8], y[9]) < 0.0 else 1.0
+        self.mode = self._initial_pivot(self._initial_mode())
         self.points.add(t0, self.z, self.mode, pinned=True)
 
     def _initial_mode(self):
@@ -409,7 +438,7 @@ class _Hybrid:
         speed = math.hypot(z[2], z[3])
         if math.hypot(*U) <= self.o["slip_tol"] * (1.0 + speed):
             z[2], z[3] = _cl._rolling_velocity(h, z)
-            F_t, F_z, _ = run.contact(ROLLING, z)
+            F_t, F_z, _, _ = run.contact(ROLLING, z)
             if F_t > self.ground.mu_s * F_z:
                 self.transitions.append(Transition(self.t0, "rolling", "sliding"))
                 return _start_sliding(run, self.disk, self.ground, z)
@@ -417,6 +446,31 @@ class _Hybrid:
         n = math.hypot(*U)
         run.ref = (U[0] / n, U[1] / n)
         return SLIDING
+
+    def _initial_pivot(self, mode):
+        """The pivot state at ``t0``: stuck if ``omega_z`` is negligible (``slip_tol``
+        relative to ``1 + |omega|``) and the moment holding it lies within ``c F_z``; else
+        ``sz = sgn(omega_z)``, or the way it will turn."""
+        run, z = self.run, self.z
+        if run.c_pivot == 0.0:
+            return mode
+        wz = _cl._omega_z(z[5], z[8], z[9])
+        if abs(wz) > self.o["slip_tol"] * (1.0 + float(np.linalg.norm(z[7:10]))):
+            run.sz = 1.0 if wz > 0.0 else -1.0
+            return mode
+        return self._pivot_settles(mode)
+
+    def _pivot_settles(self, base):
+        """At ``omega_z = 0`` in the base mode ``base``: the stuck sub-mode if the moment
+        that holds ``omega_z = 0`` lies within ``c F_z``; else ``base`` with ``sz`` the way
+        ``omega_z`` turns (the pivot moment at its bound opposes it)."""
+        run = self.run
+        base &= 1
+        _, F_z, _, L = run.contact(base | PIVOT_STUCK, self.z)
+        if abs(L) <= run.c_pivot * F_z:
+            return base | PIVOT_STUCK
+        run.sz = -1.0 if L > 0.0 else 1.0
+        return base
 
     def integrate(self):
         """Run mode segment after mode segment until the end, a guard or a budget."""
@@ -512,7 +566,7 @@ class _Hybrid:
         self.t, self.z = solver.t, solver.y.copy()
         self.points.add(self.t, self.z, mode)
         g_old = run.events(mode, self.z)
-        if mode == SLIDING:
+        if mode & 1 == SLIDING:
             U = _inertial_slip(self.h, self.z)
             n = math.hypot(*U)
             if n > U_EPS:
@@ -530,8 +584,8 @@ class _Hybrid:
         self.t, self.z = te, np.asarray(sol(te), dtype=float).copy()
         self.points.add(self.t, self.z, self.mode, pinned=True)
         t = self.t
-        if k > 0:  # terminal guard
-            self.status = ("lift-off", "edge-contact", "fell-flat")[k - 1]
+        if k > 1:  # terminal guard
+            self.status = ("lift-off", "edge-contact", "fell-flat")[k - 2]
             self.t_event = t
             self.message = _message(self.status, t, self.h)
             return False
@@ -541,12 +595,29 @@ class _Hybrid:
             self.message = (f"transition budget exhausted: {self.o['max_transitions']} mode "
                             f"events by t = {t:.12g} (sticking and slipping chatter?)")
             return False
-        if self.mode == SLIDING:
+        if k == 1:
+            self._pivot_event()
+            return True
+        if self.mode & 1 == SLIDING:
             turned = self._slip_turned()
             if turned is not None:
                 return turned
         self._switch_mode()
         return True
+
+    def _pivot_event(self):
+        """``omega_z`` reached 0 (the pivot sticks if it can, else the spin reverses), or the
+        moment holding the stuck pivot reached ``c F_z`` (the pivot slips, ``sz`` the way
+        ``omega_z`` turns)."""
+        if self.mode & PIVOT_STUCK:
+            _, _, _, L = self.run.contact(self.mode, self.z)
+            self.run.sz = -1.0 if L > 0.0 else 1.0
+            new = self.mode & 1
+        else:
+            new = self._pivot_settles(self.mode)
+        if new != self.mode:
+            self.transitions.append(Transition(self.t, _NAMES[self.mode], _NAMES[new]))
+        self.mode = new
 
     def _slip_turned(self):
         """At a zero of ``u . u_ref`` with the slip not at rest: a new slip reference
@@ -569,14 +640,19 @@ class _Hybrid:
 
     def _switch_mode(self):
         """The mode after the end of the current one (recorded as a transition if it
-        differs): rolling starts to slide; sliding rolls if the cone allows, else slides on."""
+        differs): rolling starts to slide; sliding rolls if the cone allows, else slides on.
+        A stuck pivot stays stuck if the new contact mode can hold it."""
         run, z, disk, ground = self.run, self.z, self.disk, self.ground
-        if self.mode == ROLLING:
-            new = _start_sliding(run, disk, ground, z)
+        stuck = self.mode & PIVOT_STUCK
+        if self.mode & 1 == ROLLING:
+            new = _start_sliding(run, disk, ground, z, stuck)
         else:
             z[2], z[3] = _cl._rolling_velocity(self.h, z)  # u = 0 up to the event tolerance
-            F_t, F_z, _ = run.contact(ROLLING, z)
-            new = ROLLING if F_t <= ground.mu_s * F_z else _start_sliding(run, disk, ground, z)
+            F_t, F_z, _, _ = run.contact(ROLLING | stuck, z)
+            new = (ROLLING if F_t <= ground.mu_s * F_z
+                   else _start_sliding(run, disk, ground, z, stuck))
+        if stuck:
+            new = self._pivot_settles(new)
         if new != self.mode:
             self.transitions.append(Transition(self.t, _NAMES[self.mode], _NAMES[new]))
         self.mode = new
@@ -594,11 +670,13 @@ class _Hybrid:
             dissipated={k: Z[10 + i].copy() for i, k in enumerate(DISSIPATION_TERMS)})
 
 
-def _start_sliding(run, disk, ground, z):
-    """Switch to sliding at a state with ``u = 0``: the slip direction is solved."""
-    d = slip_direction(disk, ground, z[:10])
+def _start_sliding(run, disk, ground, z, stuck=0):
+    """Switch to sliding at a state with ``u = 0``: the slip direction is solved (with the
+    pivot as it is: stuck if ``stuck``, else the segment's ``sz``)."""
+    sz = run.pivot_state(stuck)
+    d = _slip_direction(disk.h, ground.mu_k, ground.coefficients, z[:10], sz)
     if d is None:  # no consistent slip direction: oppose the rolling friction force
-        _, F_x, F_y, *_ = _cl._coulomb_rolling(disk.h, *ground.coefficients, z)
+        _, F_x, F_y, *_ = run.solve(ROLLING | stuck, z)
         n = math.hypot(F_x, F_y) or 1.0
         d = (-F_x / n, -F_y / n)
     run.ref = _cl._to_inertial(z[4], d[0], d[1])
@@ -609,13 +687,13 @@ def _first_event(run, mode, sol, ta, tb, g_old, edge, guards):
     """The first event in ``(ta, tb]`` on the dense output ``sol``: ``(index, time)``."""
     from scipy.optimize import brentq
 
-    active = [True, guards, edge, guards]
+    active = [True, run.c_pivot > 0.0, guards, edge, guards]
     ts = np.linspace(ta, tb, _N_SAMPLE)
     prev = g_old
     best = None
     for i in range(1, ts.size):
         gi = run.events(mode, np.asarray(sol(ts[i])))
-        for k in range(4):
+        for k in range(5):
             if active[k] and prev[k] > 0.0 and gi[k] <= 0.0:
                 def fk(s, k=k):
                     return run.events(mode, np.asarray(sol(s)))[k]
@@ -625,14 +703,14 @@ def _first_event(run, mode, sol, ta, tb, g_old, edge, guards):
                     best = (k, te)
         if best is not None:
             k, te = best
-            if k != 2 and active[2] and prev[2] > 0.0 and gi[2] <= 0.0:
+            if k != 3 and active[3] and prev[3] > 0.0 and gi[3] <= 0.0:
                 # theta crossing 0 flips h~ and makes u and F jump: an event of the mode
                 # found at that jump is the edge contact itself
-                te2 = ts[i] if gi[2] == 0.0 else brentq(
-                    lambda s: run.events(mode, np.asarray(sol(s)))[2], ts[i - 1], ts[i],
+                te2 = ts[i] if gi[3] == 0.0 else brentq(
+                    lambda s: run.events(mode, np.asarray(sol(s)))[3], ts[i - 1], ts[i],
                     xtol=1e-15, rtol=8.9e-16, maxiter=200)
                 if te2 - te <= 1e-9 * (1.0 + abs(te2)):
-                    return 2, te2
+                    return 3, te2
             return best
         prev = gi
     return None

@@ -24,7 +24,8 @@ __all__ = ["Trajectory", "Transition"]
 @dataclass(frozen=True)
 class Transition:
     """A change of mode on Coulomb ground at time ``t``: ``from_mode -> to_mode``
-    (``"rolling"`` / ``"sliding"``)."""
+    (names of :data:`rollingdisk.friction.coulomb.MODE_NAMES`: ``"rolling"``, ``"sliding"``,
+    ``"rolling, pivot stuck"``, ``"sliding, pivot stuck"``)."""
 
     t: float
     from_mode: str
@@ -86,7 +87,8 @@ class Trajectory:
         the whole run (as ``solve_ivp``'s ``sol``), for ``t`` within ``[t[0], t[-1]]``.
     mode : ndarray of int8 or None
         Coulomb ground only: the mode at each stored point, codes
-        :data:`rollingdisk.friction.coulomb.MODE_NAMES` (0 rolling, 1 sliding); ``None`` for
+        :data:`rollingdisk.friction.coulomb.MODE_NAMES` (0 rolling, 1 sliding, 2, 3
+        the same with the pivot stuck); ``None`` for
         single-mode runs (rough, smooth).
     transitions : tuple of Transition
         Coulomb ground only: the mode changes ``(t, from_mode, to_mode)``, in time order.

@@ -44,7 +44,8 @@ from .derivation import (
     v_Cz,
 )
 
-__all__ = ["CoulombDerivation", "derive_coulomb", "lambdified_coulomb", "classic_transition"]
+__all__ = ["CoulombDerivation", "derive_coulomb", "lambdified_coulomb", "classic_transition",
+           "derive_pivot_stuck", "lambdified_pivot_stuck"]
 
 mu, e_x, e_y = sp.symbols("mu e_x e_y", real=True)
 M0 = sp.symbols("M0x M0y M0z", real=True)
@@ -146,3 +147,87 @@ def classic_transition():
     u = (v0 + a_v * t) - (a_w * t)  # eq. (6): u_x = v_Cx - omega2 (a = 1, h = 0)
     t_star = sp.solve(sp.Eq(u, 0), t)[0]
     return sp.simplify(t_star), sp.simplify(v0 + a_v * t_star), sp.simplify(a_w * t_star)
+
+
+# ---------------------------------------------------------------------------------------
+# Set-valued pivoting friction: the "pivot stuck" sub-modes (issue 22)
+# ---------------------------------------------------------------------------------------
+#: The pivot moment while the pivot sticks: an unknown of the constrained system.
+M_piv = sp.Symbol("M_piv", real=True)
+
+
+@lru_cache(maxsize=1)
+def derive_pivot_stuck() -> dict:
+    """Rolling and sliding with the vertical spin held at zero (pivot stuck), derived.
+
+    While the pivot sticks, the pivoting-friction moment is not ``-c F_z sgn(omega_z)`` but
+    whatever keeps ``omega_z = omega2 sin(theta) + omega3 cos(theta)`` (the vertical
+    component of the angular velocity, Cxyz) at zero, as long as it stays within
+    ``|M_piv| <= c F_z``.  So the contact moment is ``M = M0 + F_z M1 + M_piv e_z`` with the
+    extra unknown ``M_piv`` and the extra equation (the constraint differentiated along the
+    motion, ``d theta/dt = omega1``; ``e_z`` is vertical, so the turning of Cxyz about it
+    leaves ``d omega_z/dt`` the derivative of the component)::
+
+        d omega_z/dt = domega2 sin(theta) + domega3 cos(theta)
+                       + omega1 (omega2 cos(theta) - omega3 sin(theta)) = 0.
+
+    Rolling: (8), (9), the no-slip accelerations and this equation, linear in
+    ``domega1..3, F_x, F_y, F_z, M_piv``.  Sliding: (9), (11) with ``F_t = -mu F_z e`` and
+    this equation, linear in ``domega1..3, F_z, M_piv``; (8)_1,2 give ``dv_Cx, dv_Cy``.
+
+    Returns
+    -------
+    dict
+        ``{"rolling": {...}, "sliding": {...}}``, each mapping ``"domega1".."domega3",
+        "F_x", "F_y", "F_z", "M_piv"`` (sliding adds ``"dv_Cx", "dv_Cy"``) to expressions in
+        the symbols of :func:`derive_coulomb` (``M1z`` kept general; the stuck kernels use
+        it with the pivot term removed).
+    """
+    d = derive()
+    moment = {M_x: M0[0] + F_z * M1[0], M_y: M0[1] + F_z * M1[1],
+              M_z: M0[2] + F_z * M1[2] + M_piv}
+    euler = [e.subs(moment) for e in d.euler]
+    vP = d.contact_velocity
+    v_Cz_c = d.centre_height[1]
+    rates = {theta: omega1, omega1: dw1, omega2: dw2, omega3: dw3}
+
+    def ddt(expr):
+        return sum(sp.diff(expr, q) * r for q, r in rates.items())
+
+    omega_z = omega2 * sp.sin(theta) + omega3 * sp.cos(theta)
+    stuck = ddt(omega_z)  # = 0
+
+    vr = sp.solve(list(vP[:2]), [v_Cx, v_Cy], dict=True)[0]
+    vel = {v_Cx: vr[v_Cx], v_Cy: vr[v_Cy], v_Cz: v_Cz_c}
+    acc = {dv[0]: ddt(vel[v_Cx]), dv[1]: ddt(vel[v_Cy]), dv[2]: ddt(v_Cz_c)}
+    eqs = [n.subs(acc).subs(vel) for n in d.newton] + euler + [stuck]
+    unknowns = [dw1, dw2, dw3, F_x, F_y, F_z, M_piv]
+    sol = _linear_solve(eqs, unknowns)
+    rolling = {("M_piv" if u is M_piv else str(u)): sol[u] for u in unknowns}
+
+    fric = {F_x: -mu * F_z * e_x, F_y: -mu * F_z * e_y}
+    vert = d.newton[2].subs({dv[2]: ddt(v_Cz_c), v_Cz: v_Cz_c})  # (8)_3 under contact
+    eqs = [vert.subs(fric)] + [e.subs(fric) for e in euler] + [stuck]
+    unknowns = [dw1, dw2, dw3, F_z, M_piv]
+    sol = _linear_solve(eqs, unknowns)
+    sliding = {str(u): sol[u] for u in unknowns}
+    sliding["F_x"] = fric[F_x].subs(F_z, sol[F_z])
+    sliding["F_y"] = fric[F_y].subs(F_z, sol[F_z])
+    horiz = sp.solve([n.subs(fric).subs(F_z, sol[F_z]) for n in d.newton[:2]],
+                     [dv[0], dv[1]], dict=True)[0]
+    sliding["dv_Cx"], sliding["dv_Cy"] = horiz[dv[0]], horiz[dv[1]]
+    return {"rolling": rolling, "sliding": sliding}
+
+
+@lru_cache(maxsize=1)
+def lambdified_pivot_stuck() -> dict:
+    """Numpy functions from :func:`derive_pivot_stuck`, arguments as in
+    :func:`lambdified_coulomb`; they return ``[dw1, dw2, dw3, F_x, F_y, F_z, M_piv]``
+    (sliding adds ``dv_Cx, dv_Cy``)."""
+    c = derive_pivot_stuck()
+    base = (ht, theta, omega1, omega2, omega3)
+    keys = ("domega1", "domega2", "domega3", "F_x", "F_y", "F_z", "M_piv")
+    rolling = sp.lambdify(base + M0 + M1, [c["rolling"][k] for k in keys], "numpy")
+    sliding = sp.lambdify(base + (v_Cx, v_Cy, mu, e_x, e_y) + M0 + M1,
+                          [c["sliding"][k] for k in keys + ("dv_Cx", "dv_Cy")], "numpy")
+    return {"rolling": rolling, "sliding": sliding}
