@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rollingdisk.friction import coulomb as _cl
-from rollingdisk.friction.coulomb import coulomb_contact, coulomb_energy
+from rollingdisk.friction.coulomb import MODE_NAMES, coulomb_contact, coulomb_energy
 from rollingdisk.friction.ground import Coulomb
 from rollingdisk.friction.hybrid import simulate_coulomb, slip_direction
 from rollingdisk.friction.impact import (
@@ -760,8 +760,7 @@ class _Motion:
                               atol=self.atol, slip_tol=1e-9, alpha_min=self.alpha_flat,
                               max_steps=self.max_steps)
         self.segments.append(tr)
-        modes = ("rolling", "sliding")
-        self._enter(t, modes[int(tr.mode[0])])
+        self._enter(t, MODE_NAMES[int(tr.mode[0])])  # pivot-stuck sub-modes included
         for tx in tr.transitions:
             self._enter(tx.t, tx.to_mode)
         self._check(tr.E + sum(tr.dissipated.values()))
