@@ -277,42 +277,114 @@ def _locate_guards(guards, sol, t_old, t_new, g_old, g_new):
     return None
 
 
+class _UserEvents:
+    """The user events of a scipy run, as ``solve_ivp`` treats them: sign changes between
+    step ends in the direction asked, located by ``brentq`` on the step's interpolant, and
+    the terminal count of each."""
+
+    def __init__(self, events, t0, y):
+        self.events = list(events or [])
+        self.u_old = [e(t0, y) for e in self.events]
+        self.t = [[] for _ in self.events]
+        self.y = [[] for _ in self.events]
+        self.counts = [0] * len(self.events)
+
+    def step(self, sol, t_old, t_new, y_new, t_stop):
+        """Record the events of one step up to ``t_stop``; the first terminal one that
+        ends the run, ``(t, k)``, or None."""
+        from scipy.optimize import brentq
+
+        u_new = [e(t_new, y_new) for e in self.events]
+        stop = None
+        for k, e in enumerate(self.events):
+            a, b = self.u_old[k], u_new[k]
+            d = getattr(e, "direction", 0)
+            if (a < 0 <= b or a > 0 >= b) and not (d > 0 and a > b) and not (d < 0 and a < b):
+                tr = brentq(lambda s, e=e: e(s, sol(s)), t_old, t_new,
+                            xtol=4 * np.finfo(float).eps) if b != 0 else t_new
+                if tr > t_stop:
+                    continue
+                self.t[k].append(tr)
+                self.y[k].append(sol(tr))
+                self.counts[k] += 1
+                term = int(getattr(e, "terminal", False) or 0)
+                if term and self.counts[k] >= term and (stop is None or tr < stop[0]):
+                    stop = (tr, k)
+        self.u_old = u_new
+        return stop
+
+    def results(self):
+        """``(t_events, y_events)`` as ``solve_ivp`` gives them."""
+        return (tuple(np.array(v) for v in self.t),
+                tuple(np.array(v).reshape(len(v), -1) for v in self.y))
+
+
+class _Sampler:
+    """Where a scipy run's output goes: every step end, or the points of ``t_eval`` (from
+    the interpolant) plus the final state."""
+
+    def __init__(self, out, t_eval, t0, y):
+        self.out, self.te, self.ie = out, t_eval, 0
+        if t_eval is None:
+            out.add([t0], [y])
+        else:
+            while self.ie < t_eval.size and t_eval[self.ie] <= t0:
+                out.add([t0], [y])
+                self.ie += 1
+
+    def add(self, t_stop, y_stop, sol, ended):
+        te, ie = self.te, self.ie
+        if te is None:
+            self.out.add([t_stop], [y_stop])
+            return
+        j = ie
+        while j < te.size and te[j] <= t_stop:
+            j += 1
+        if j > ie:
+            self.out.add(te[ie:j], np.array([y_stop if s == t_stop else sol(s)
+                                             for s in te[ie:j]]))
+        self.ie = j
+        if ended and (j == 0 or te[j - 1] != t_stop):
+            self.out.add([t_stop], [y_stop])
+
+
+def _guard_stop(ground, guards, solver, sol, g_old, g_new):
+    """The first guard of the step, ``(t, y, code)``, or None; an edge contact reports the
+    admissible side of theta = 0, where h~ = h sgn(theta) flips."""
+    if not guards or not _needs_sampling(guards, solver, g_old, g_new):
+        return None
+    hit = _locate_guards(guards, sol, solver.t_old, solver.t, g_old, g_new)
+    if hit is None:
+        return None
+    t_stop, y_stop = hit[0], sol(hit[0])
+    if hit[1].code == _ev.EDGE_CONTACT:
+        i = state_index(ground, "theta")
+        if y_stop[i] * hit[1].side <= 0:
+            y_stop = np.array(y_stop)
+            y_stop[i] = np.nextafter(0.0, hit[1].side)
+    return t_stop, y_stop, hit[1].code
+
+
 def run_scipy(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_eval,
               dense_output, events, guards, max_steps, progress, out, finish):
+    """``simulate(method="scipy")``: scipy's ``DOP853`` stepped one step at a time, with
+    the guards located on each step's interpolant and ``solve_ivp``'s user events."""
     from scipy.integrate import DOP853
-    from scipy.optimize import brentq
 
     fun = _Counter(equations_of_motion(disk, ground))
-    user = list(events or [])
     g_old = [g(t0, y) for g in guards]
-    code = _ev.RUNNING
-    te = t_eval
-    ie = 0
-    if te is None:
-        out.add([t0], [y])
-    else:
-        while ie < te.size and te[ie] <= t0:
-            out.add([t0], [y])
-            ie += 1
+    sampler = _Sampler(out, t_eval, t0, y)
     for g, v in zip(guards, g_old):
         if g.code != _ev.EDGE_CONTACT and v <= 0.0:
-            if te is None or ie == 0:
-                if te is not None:
-                    out.add([t0], [y])
+            if t_eval is not None and sampler.ie == 0:
+                out.add([t0], [y])
             return finish(disk, ground, "scipy", out, g.code, t0, 0, 0, 0.0, max_steps, t1)
     start = time.perf_counter()
     options = {} if first_step is None else {"first_step": first_step}
     solver = DOP853(fun, t0, y, t1, max_step=max_step, rtol=rtol, atol=atol, **options)
-    u_old = [e(t0, y) for e in user]
-    t_events = [[] for _ in user]
-    y_events = [[] for _ in user]
-    counts = [0] * len(user)
-    marks = _marks(t0, t1, progress)
-    i_mark = 0
-    n_steps = 0
-    segments = []
-    message = None
-    t_now = t0
+    user = _UserEvents(events, t0, y)
+    marks, i_mark = _marks(t0, t1, progress), 0
+    n_steps, segments, message, t_now, code = 0, [], None, t0, _ev.RUNNING
     while code == _ev.RUNNING:
         if solver.status == "finished":
             code = _ev.COMPLETED
@@ -325,56 +397,18 @@ def run_scipy(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_ev
             code, message = _ev.FAILED, f"failed: {msg}"
             break
         n_steps += 1
-        t_old, t_new = solver.t_old, solver.t
         sol = _LazyDense(solver)  # 3 right-hand sides, only if the step needs them
-        g_new = [g(t_new, solver.y) for g in guards]
-        t_stop, y_stop = t_new, solver.y
-        hit = _locate_guards(guards, sol, t_old, t_new, g_old, g_new) \
-            if guards and _needs_sampling(guards, solver, g_old, g_new) else None
-        if hit is not None:
-            t_stop, y_stop, code = hit[0], sol(hit[0]), hit[1].code
-            if hit[1].code == _ev.EDGE_CONTACT:
-                # report the admissible side of theta = 0, where h~ = h sgn(theta) flips
-                i = state_index(ground, "theta")
-                if y_stop[i] * hit[1].side <= 0:
-                    y_stop = np.array(y_stop)
-                    y_stop[i] = np.nextafter(0.0, hit[1].side)
-        # user events, as solve_ivp: sign changes between step ends, in the direction asked
-        u_new = [e(t_new, solver.y) for e in user]
-        stop_user = None
-        for k, e in enumerate(user):
-            a, b = u_old[k], u_new[k]
-            d = getattr(e, "direction", 0)
-            if (a < 0 <= b or a > 0 >= b) and not (d > 0 and a > b) and not (d < 0 and a < b):
-                tr = brentq(lambda s, e=e, sol=sol: e(s, sol(s)), t_old, t_new, xtol=4 * np.finfo(
-                    float).eps) if b != 0 else t_new
-                if tr > t_stop:
-                    continue
-                t_events[k].append(tr)
-                y_events[k].append(sol(tr))
-                counts[k] += 1
-                term = int(getattr(e, "terminal", False) or 0)
-                if term and counts[k] >= term and (stop_user is None or tr < stop_user[0]):
-                    stop_user = (tr, k)
+        g_new = [g(solver.t, solver.y) for g in guards]
+        hit = _guard_stop(ground, guards, solver, sol, g_old, g_new)
+        t_stop, y_stop, code = hit if hit is not None else (solver.t, solver.y, code)
+        stop_user = user.step(sol, solver.t_old, solver.t, solver.y, t_stop)
         if stop_user is not None and (hit is None or stop_user[0] < t_stop):
             t_stop, y_stop, code = stop_user[0], sol(stop_user[0]), _ev.COMPLETED
             message = f"completed: stopped by user event {stop_user[1]} at t = {t_stop:.12g}"
         if dense_output:
-            segments.append((t_old, sol.get()))
-        if te is None:
-            out.add([t_stop], [y_stop])
-        else:
-            j = ie
-            while j < te.size and te[j] <= t_stop:
-                j += 1
-            if j > ie:
-                out.add(te[ie:j], np.array([y_stop if s == t_stop else sol(s)
-                                            for s in te[ie:j]]))
-            ie = j
-            if code != _ev.RUNNING and (j == 0 or te[j - 1] != t_stop):
-                out.add([t_stop], [y_stop])
-        t_now = t_stop
-        g_old, u_old = g_new, u_new
+            segments.append((solver.t_old, sol.get()))
+        sampler.add(t_stop, y_stop, sol, code != _ev.RUNNING)
+        t_now, g_old = t_stop, g_new
         i_mark, crossed = _advance(marks, i_mark, t_now)
         if progress is not None and (code != _ev.RUNNING or crossed
                                      or solver.status == "finished"):
@@ -386,7 +420,6 @@ def run_scipy(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t_ev
 
         sol = OdeSolution(np.array([s[0] for s in segments] + [t_now]),
                           [s[1] for s in segments])
-    t_ev = tuple(np.array(v) for v in t_events)
-    y_ev = tuple(np.array(v).reshape(len(v), -1) for v in y_events)
+    t_ev, y_ev = user.results()
     return finish(disk, ground, "scipy", out, code, t_now, n_steps, fun.n, wall, max_steps,
                   t1, message=message, sol=sol, t_events=t_ev, y_events=y_ev)
