@@ -855,45 +855,19 @@ def _real_array(name: str, value, max_size: int = 1_000_000) -> np.ndarray:
 def _exact_motion(disk, ground, y0, budget, known):
     rough = ground == "rough"
     h = disk.h
-    it = state_index(ground, "theta")
-    theta0, w10, w20, w30 = (float(y0[it]), float(y0[it + 2]), float(y0[it + 3]),
-                             float(y0[it + 4]))
-    if not abs(theta0) < 0.5 * math.pi:
-        raise ParameterError(f"theta must lie in (-pi/2, pi/2), got {theta0!r}")
-    if h > 0 and theta0 == 0.0:
-        raise ParameterError("theta = 0 is outside the model for h > 0 (the disk stands "
-                             "on its rim edge's line); start with theta != 0")
-    F_z0 = float(_normal_force(rough, h, y0))
-    if F_z0 < 0.0:
-        raise ParameterError(f"the normal force F_z (eq. 11) is {F_z0:.6g} < 0 at the "
-                             "start: the disk would lift off at once")
+    theta0, w10, w20, w30, lo, hi = _start(disk, ground, y0)
     from rollingdisk.model.equations import energy
 
-    E = float(energy(disk, ground, y0))
-    side = 1.0 if theta0 > 0 else -1.0
-    lo = -_FLAT if (h == 0.0 or side < 0) else _TINY
-    hi = _FLAT if (h == 0.0 or side > 0) else -_TINY
-    if not lo < theta0 < hi:
-        raise ParameterError(f"theta(0) = {theta0!r} is too close to pi/2 or to 0")
     q0 = w10 * w10
     a1, c1, _, _ = _theta_coefficients(rough, h, theta0, w20, w30)
     accel = a1 + c1 * q0  # d omega1/dt at the start
-    base = dict(disk=disk, ground=ground, E=E, y0=np.array(y0, float))
+    base = dict(disk=disk, ground=ground, E=float(energy(disk, ground, y0)),
+                y0=np.array(y0, float))
     known["base"] = base
     if q0 == 0.0 and abs(accel) <= 1e-14 * (1.0 + w20 * w20 + w30 * w30):
         return _steady_result(base, rough, h, theta0, w20, w30)
-
-    z0 = [w20, w30, q0]
-    if q0 == 0.0:  # theta0 is a turning point; the motion starts towards accel's sign
-        if accel > 0:
-            a, ka, fa = theta0, "turn", None
-            b, kb, fb = _sweep(rough, h, theta0, z0, hi, budget)
-        else:
-            b, kb, fb = theta0, "turn", None
-            a, ka, fa = _sweep(rough, h, theta0, z0, lo, budget)
-    else:
-        b, kb, fb = _sweep(rough, h, theta0, z0, hi, budget)
-        a, ka, fa = _sweep(rough, h, theta0, z0, lo, budget)
+    (a, ka, fa), (b, kb, fb) = _turning_sweeps(rough, h, theta0, [w20, w30, q0], accel,
+                                               lo, hi, budget)
     known.update(a=float(a), b=float(b))
 
     def evaluate(theta):
@@ -914,45 +888,11 @@ def _exact_motion(disk, ground, y0, budget, known):
                S=1.0 + w20 * w20 + w30 * w30 + q0)
     known["fit"] = fit
     budget.clock("the Chebyshev fit")
-    end_kind = {a: _end_kind(h, a, ka), b: _end_kind(h, b, kb)}
-
-    # lift-off: zeros of F_z (eq. 11) on [a, b], the first one along the motion
-    xs = np.cos(np.linspace(0.0, np.pi, 4001))[::-1]
-    th = fit.m + fit.d * xs
-    Fz = _orbit_normal_force(rough, h, th, *fit.functions(th))
-    roots = []
-    for i in np.nonzero(np.sign(Fz[:-1]) * np.sign(Fz[1:]) < 0)[0]:
-        roots.append(_root(lambda s: float(_orbit_normal_force(
-            rough, h, np.array(s), *fit.functions(np.array(s)))), th[i], th[i + 1]))
     s = 1.0 if (w10 > 0 or (w10 == 0 and accel > 0)) else -1.0
-    near, far = (b, a) if s > 0 else (a, b)
-    ahead = [r for r in roots if (r - theta0) * s > 0]
-    behind = [r for r in roots if (r - theta0) * s <= 0]
-    legs, status, theta_end = None, None, None
-    if ahead:
-        theta_end = min(ahead, key=lambda r: abs(r - theta0))
-        legs, status = [(theta0, theta_end)], "lift-off"
-    elif end_kind[near] != "turn":
-        legs, status, theta_end = [(theta0, near)], end_kind[near], near
-    elif behind:
-        theta_end = min(behind, key=lambda r: abs(r - theta0))
-        legs, status = [(theta0, near), (near, theta_end)], "lift-off"
-    elif end_kind[far] != "turn":
-        legs, status, theta_end = [(theta0, near), (near, far)], end_kind[far], far
-
-    if legs is not None:
-        t_end = float(sum(_leg_time(fit, p, r) for p, r in legs))
-        visited = [0.0 if abs(p) == _TINY else p for leg in legs for p in leg]
-        if status == "edge-contact":
-            theta_end = 0.0
-        elif status == "fell-flat":
-            theta_end = math.copysign(0.5 * math.pi, theta_end)
-        res = ExactMotion(status=status, theta_min=float(min(visited)),
-                          theta_max=float(max(visited)),
-                          period=None, delta_psi=None, delta_phi=None, drift=None,
-                          t_end=t_end, theta_end=theta_end, _fit=fit, **base)
-        return res
-
+    ended = _open_end(fit, rough, h, theta0, s, {a: _end_kind(h, a, ka),
+                                                  b: _end_kind(h, b, kb)}, a, b, base)
+    if ended is not None:
+        return ended
     orbit = _Orbit(fit, rough, h, np.array(y0, float), ground, budget)
     # drift of the contact point over the first period (eq. 5)
     from rollingdisk.model.equations import contact_point
@@ -963,6 +903,77 @@ def _exact_motion(disk, ground, y0, budget, known):
                        period=float(orbit.T), delta_psi=float(orbit.dpsi),
                        delta_phi=float(orbit.dphi), drift=drift, t_end=None,
                        theta_end=None, _fit=fit, _orbit=orbit, **base)
+
+
+def _start(disk, ground, y0):
+    """``(theta0, omega1, omega2, omega3, lo, hi)`` of a start the model admits (``lo, hi``:
+    the theta range an orbit may sweep), or ParameterError saying why not."""
+    h = disk.h
+    it = state_index(ground, "theta")
+    theta0, w10, w20, w30 = (float(y0[it]), float(y0[it + 2]), float(y0[it + 3]),
+                             float(y0[it + 4]))
+    if not abs(theta0) < 0.5 * math.pi:
+        raise ParameterError(f"theta must lie in (-pi/2, pi/2), got {theta0!r}")
+    if h > 0 and theta0 == 0.0:
+        raise ParameterError("theta = 0 is outside the model for h > 0 (the disk stands "
+                             "on its rim edge's line); start with theta != 0")
+    F_z0 = float(_normal_force(ground == "rough", h, y0))
+    if F_z0 < 0.0:
+        raise ParameterError(f"the normal force F_z (eq. 11) is {F_z0:.6g} < 0 at the "
+                             "start: the disk would lift off at once")
+    side = 1.0 if theta0 > 0 else -1.0
+    lo = -_FLAT if (h == 0.0 or side < 0) else _TINY
+    hi = _FLAT if (h == 0.0 or side > 0) else -_TINY
+    if not lo < theta0 < hi:
+        raise ParameterError(f"theta(0) = {theta0!r} is too close to pi/2 or to 0")
+    return theta0, w10, w20, w30, lo, hi
+
+
+def _turning_sweeps(rough, h, theta0, z0, accel, lo, hi, budget):
+    """The sweeps from theta0 down and up to the turning points (or the range's ends):
+    ``((a, kind, f), (b, kind, f))``; a start at a turning point sweeps one way only."""
+    if z0[2] == 0.0:  # theta0 is a turning point; the motion starts towards accel's sign
+        if accel > 0:
+            return (theta0, "turn", None), _sweep(rough, h, theta0, z0, hi, budget)
+        return _sweep(rough, h, theta0, z0, lo, budget), (theta0, "turn", None)
+    return _sweep(rough, h, theta0, z0, lo, budget), _sweep(rough, h, theta0, z0, hi, budget)
+
+
+def _open_end(fit, rough, h, theta0, s, end_kind, a, b, base):
+    """The ExactMotion of an orbit that ends (lift-off: the first zero of F_z, eq. 11, along
+    the motion; or an end of the range: edge contact, fell flat), or None if it is bounded.
+    ``s``: the sign of the motion's start."""
+    xs = np.cos(np.linspace(0.0, np.pi, 4001))[::-1]
+    th = fit.m + fit.d * xs
+    Fz = _orbit_normal_force(rough, h, th, *fit.functions(th))
+    roots = [_root(lambda x: float(_orbit_normal_force(
+        rough, h, np.array(x), *fit.functions(np.array(x)))), th[i], th[i + 1])
+        for i in np.nonzero(np.sign(Fz[:-1]) * np.sign(Fz[1:]) < 0)[0]]
+    near, far = (b, a) if s > 0 else (a, b)
+    ahead = [r for r in roots if (r - theta0) * s > 0]
+    behind = [r for r in roots if (r - theta0) * s <= 0]
+    if ahead:
+        theta_end = min(ahead, key=lambda r: abs(r - theta0))
+        legs, status = [(theta0, theta_end)], "lift-off"
+    elif end_kind[near] != "turn":
+        legs, status, theta_end = [(theta0, near)], end_kind[near], near
+    elif behind:
+        theta_end = min(behind, key=lambda r: abs(r - theta0))
+        legs, status = [(theta0, near), (near, theta_end)], "lift-off"
+    elif end_kind[far] != "turn":
+        legs, status, theta_end = [(theta0, near), (near, far)], end_kind[far], far
+    else:
+        return None
+    t_end = float(sum(_leg_time(fit, p, r) for p, r in legs))
+    visited = [0.0 if abs(p) == _TINY else p for leg in legs for p in leg]
+    if status == "edge-contact":
+        theta_end = 0.0
+    elif status == "fell-flat":
+        theta_end = math.copysign(0.5 * math.pi, theta_end)
+    return ExactMotion(status=status, theta_min=float(min(visited)),
+                       theta_max=float(max(visited)), period=None, delta_psi=None,
+                       delta_phi=None, drift=None, t_end=t_end, theta_end=theta_end,
+                       _fit=fit, **base)
 
 
 def _end_kind(h, theta, kind):
