@@ -96,13 +96,19 @@ def configure(sub):
                    default="full", help="tolerances on the whole state (default) or on "
                    "(theta, omega1, omega2, omega3) only, the quadratures X_C, Y_C, psi, phi "
                    "riding along (fewer steps for the same energy drift)")
-    p.add_argument("--max-steps", dest="max_steps", type=positive_int, default=2_000_000,
+    p.add_argument("--max-steps", dest="max_steps", type=positive_int, default=None,
                    help="step budget: stop with status step-budget after this many steps "
-                   "(default 2000000, about 20 s)")
+                   "(default 2000000 on the ideal grounds, about 20 s compiled; 200000 on "
+                   "coulomb ground, whose Python-stepped integrator takes about 1 ms a step)")
+    p.add_argument("--max-wall-time", dest="max_wall_time",
+                   type=real("max_wall_time", low=0.0, high=86400.0, low_open=True),
+                   default=60.0, help="coulomb ground: wall-clock budget in seconds (default "
+                   "60); a run that spends it stops with status time-budget and says so")
     p.add_argument("--out", type=str, default=None, metavar="FILE.csv",
                    help="write the trajectory as CSV (t, X_C, Y_C, psi, theta, phi, omega1, "
                    "omega2, omega3, X_P, Y_P, F_x, F_y, F_z, E; smooth and coulomb ground "
-                   "add V_X, V_Y; coulomb ground adds mode: 0 rolling, 1 sliding); the "
+                   "add V_X, V_Y; coulomb ground adds mode: 0 rolling, 1 sliding, 2 and 3 the same "
+                   "with the pivot stuck); the "
                    "first line names the columns; in the paper's units, or for a disk with "
                    "a physical size in SI units (forces and energies only with --mass) with "
                    "a second line '# t [s],X_C [m],...' naming each column's unit")
@@ -186,7 +192,8 @@ def _run_ideal(args, disk, motion) -> dict:
 
     options = dict(rtol=DEFAULT_RTOL if args.rtol is None else args.rtol,
                    atol=DEFAULT_ATOL if args.atol is None else args.atol, method=args.method,
-                   max_steps=args.max_steps, error_control=args.error_control)
+                   max_steps=2_000_000 if args.max_steps is None else args.max_steps,
+                   error_control=args.error_control)
     if motion is None:
         y0, _ = initial_state(args, args.ground, "simulate")
     bar = _bar(args)
@@ -269,7 +276,8 @@ def _run_coulomb(args, disk, ground, motion) -> tuple[dict, list]:
     bar = _bar(args)
     try:
         traj = simulate_coulomb(disk, ground, (0.0, args.t_end), y0, progress=bar,
-                                max_steps=args.max_steps, **options)
+                                max_steps=200_000 if args.max_steps is None else
+                                args.max_steps, max_wall_time=args.max_wall_time, **options)
     finally:
         bar.close()
     transitions = [x.as_dict() for x in traj.transitions]
