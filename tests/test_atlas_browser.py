@@ -36,13 +36,23 @@ pytestmark = pytest.mark.slow
 PHONE, DESKTOP = 420, 1200
 
 
-@pytest.fixture(scope="module")
-def atlas(tmp_path_factory):
+@pytest.fixture(scope="module", params=["dimensionless", "euro-1"])
+def atlas(request, tmp_path_factory):
+    """A quick atlas of the default dimensionless disk, and of a 1-euro coin (SI)."""
     import matplotlib
 
+    import rollingdisk as rd
+
     matplotlib.use("Agg")
-    return build_atlas(0.17, tmp_path_factory.mktemp("atlas") / "atlas", quick=True,
+    disk = 0.17 if request.param == "dimensionless" else rd.disk_from_options(disk="euro-1")
+    return build_atlas(disk, tmp_path_factory.mktemp("atlas") / "atlas", quick=True,
                        progress=False)
+
+
+def test_a_coin_atlas_answers_in_si(atlas):
+    page = atlas.index.read_text(encoding="utf-8")
+    if atlas.disk is not None and atlas.disk.radius is not None:
+        assert "m/s" in page and "rad/s" in page
 
 
 @pytest.fixture(scope="module")

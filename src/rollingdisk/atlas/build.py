@@ -242,7 +242,7 @@ def _write_atlas_steps(disk, out, chosen, *, quick, pr, files, dpi, n_map, euler
                             euler=euler)
     # 10. index page ------------------------------------------------------------------------
     pr.step("index.html")
-    (out / "index.html").write_text(_index_html(disk.h, thr, motions,
+    (out / "index.html").write_text(_index_html(disk, thr, motions,
                                                 [p.name for p in files]), encoding="utf-8")
     pr.done()
     return files, motions
@@ -653,9 +653,11 @@ def _toc() -> str:
     return f'<nav class="toc" aria-label="Contents"><b>Contents</b><ol>\n{items}\n</ol></nav>'
 
 
-def _thresholds_table(thr: dict) -> str:
+def _thresholds_table(thr: dict, disk=None) -> str:
     """One row per steady motion; the threshold of |omega20| and of |omega30| in columns of
-    their own (each row has one of them)."""
+    their own (each row has one of them); in rad/s too when the disk has a size."""
+    a = getattr(disk, "radius", None)
+    w_si = None if a is None else math.sqrt(disk.gravity / a)  # sqrt(g/a) in rad/s
     rows = [
         ("rough", "straight line in the SE position", "42", "omega20",
          thr["rough"]["straight_line_omega20_sq"]),
@@ -669,8 +671,9 @@ def _thresholds_table(thr: dict) -> str:
         if which != key:
             return '<td class="empty">&ndash;</td>'
         sym = "&omega;<sub>20</sub>" if key == "omega20" else "&omega;<sub>30</sub>"
+        si = "" if w_si is None else f"<br>= {_fmt(math.sqrt(v) * w_si)} rad/s"
         return (f'<td>{_fmt(math.sqrt(v))} <span class="note">({sym}&sup2; &gt; '
-                f'{_fmt(v)})</span></td>')
+                f'{_fmt(v)})</span>{si}</td>')
 
     body = "\n".join(
         f"<tr><td>{g}</td><td class=\"text\">{what}</td><td>({eq})</td>"
@@ -702,9 +705,19 @@ other commands.</p>"""
 def _index_html(h, thr: dict, motions: dict, names: list) -> str:
     """The atlas page: every section in order, with relative image paths only."""
     hv = check_h(h)  # h, or a Disk with or without a physical scale
-    return "".join([_page_head(h, hv), _thresholds_section(thr), _MAPS_SECTION,
+    disk = h if hasattr(h, "radius") else None
+    return "".join([_page_head(h, hv), _thresholds_section(thr, disk), _MAPS_SECTION,
                     _motions_section(motions), _exact_html(motions["exact"]),
                     _page_tail(motions, names)])
+
+
+def _title(h, hv) -> str:
+    """What the atlas is about: the disk's size when it has one, its h always."""
+    a = getattr(h, "radius", None)
+    if a is None:
+        return f"a disk of half-thickness h = {hv:.4g}"
+    return (f"a disk of radius {a * 1e3:.4g} mm and thickness {2 * hv * a * 1e3:.4g} mm "
+            f"(h = {hv:.4g})")
 
 
 def _page_head(h, hv) -> str:
@@ -713,7 +726,7 @@ def _page_head(h, hv) -> str:
 <html lang="en"><head><meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">
 <title>rollingdisk atlas, h = {hv:.4g}</title><style>{_CSS}</style></head><body>
-<h1>Atlas of a disk of half-thickness h = {hv:.4g}</h1>
+<h1>Atlas of {_title(h, hv)}</h1>
 <p>A homogeneous disk of radius a and thickness 2h&nbsp;=&nbsp;{2 * hv:.4g}&nbsp;a on a
 horizontal plane, after M. Batista, <i>Steady Motion of a Rigid Disk of Finite Thickness on a
 Horizontal Plane</i>. &theta;<sub>0</sub> is the tilt from the vertical, &Omega;<sub>0</sub>
@@ -730,7 +743,7 @@ static equilibrium (SE) tilt is tan&theta;<sub>0</sub> = h, &theta;<sub>0</sub> 
 """
 
 
-def _thresholds_section(thr: dict) -> str:
+def _thresholds_section(thr: dict, disk=None) -> str:
     """The thresholds section: what they mean, and the table."""
     return f"""<h2 id="thresholds">Stability thresholds</h2>
 <p>The steady motions whose stability depends on one rate only. A straight line is stable
@@ -738,7 +751,7 @@ when the disk spins fast enough about its own axis (|&omega;<sub>20</sub>| above
 threshold), a circle in the SE position and the spin in place when it turns fast enough
 (|&omega;<sub>30</sub>| above the threshold). The squares are in
 <code>thresholds.json</code>.</p>
-{_thresholds_table(thr)}
+{_thresholds_table(thr, disk)}
 
 """
 
@@ -829,6 +842,16 @@ def _page_tail(motions: dict, names: list) -> str:
 """
 
 
+def _si_row(m: dict) -> str:
+    """The motion's row in SI (rad/s, m) when its disk has a size, else nothing."""
+    if m.get("Omega0_si") is None:
+        return ""
+    cells = "".join(f"<td>{_fmt(m[k])} {u}</td>" for k, u in (
+        ("Omega0_si", "rad/s"), ("omega20_si", "rad/s"), ("omega30_si", "rad/s"),
+        ("r_C_si", "m"), ("r_P_si", "m")) if m.get(k) is not None)
+    return f'\n<tr><td class="text">SI</td>{cells}</tr>'
+
+
 def _motion_block(m: dict, kind: str) -> str:
     """The page's section of one simulated steady circle."""
     e = html.escape
@@ -844,7 +867,7 @@ def _motion_block(m: dict, kind: str) -> str:
 <th>&omega;<sub>20</sub> [{_W}]</th><th>&omega;<sub>30</sub> [{_W}]</th>
 <th>r<sub>C</sub> [a]</th><th>r<sub>P</sub> [a]</th></tr>
 <tr><td>{_deg(m['theta0'])}</td><td>{_fmt(m['Omega0'])}</td><td>{_fmt(m['omega20'])}</td>
-<td>{_fmt(m['omega30'])}</td><td>{_fmt(m['r_C'])}</td><td>{_fmt(m['r_P'])}</td></tr>
+<td>{_fmt(m['omega30'])}</td><td>{_fmt(m['r_C'])}</td><td>{_fmt(m['r_P'])}</td></tr>{_si_row(m)}
 </table></div>
 <p>Closed form (section 4.1): {verdict}. Simulated from the steady state with a kick
 d&theta;/dt(0) = {_fmt(m['kick'], 2)} {_W} until t = {_fmt(m['t_end'])} {_T} (status
