@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 
 __all__ = ["finite_or_none", "print_record", "agg", "has_scale", "disk_fields", "with_si",
-           "si_text", "disk_line"]
+           "si_text", "disk_line", "progress_bar"]
 
 
 def finite_or_none(value):
@@ -111,3 +111,10 @@ def disk_line(disk) -> str:
         parts.append(f"mass {disk.mass * 1e3:.6g} g")
     parts.append(f"gravity {disk.gravity:.6g} m/s^2")
     return "disk: " + ", ".join(parts)
+
+
+def progress_bar(args):
+    """The progress bar of a command's run on stderr (quiet with ``--json``)."""
+    from rollingdisk.util.progress import ProgressBar
+
+    return ProgressBar(quiet=getattr(args, "json", False))

@@ -16,7 +16,6 @@ import json
 
 from rollingdisk.cli._args import (
     SIMULATE_T_END_MAX,
-    CLIError,
     add_json_arg,
     add_motion_args,
     add_perturbation_args,
@@ -27,20 +26,19 @@ from rollingdisk.cli._args import (
     length_coefficient,
     positive_int,
     real,
-    resolve_length,
     start_from_args,
     t_end_arg,
 )
+from rollingdisk.cli._coulomb import coulomb_ground, run_coulomb
 from rollingdisk.cli._format import (
     disk_fields,
     disk_line,
     finite_or_none,
     has_scale,
     print_record,
+    progress_bar,
     with_si,
 )
-
-FRICTION = ("mu", "mu_k", "rolling_resistance", "pivot", "air")
 
 #: The kind of quantity of each field of the summary (keys of rollingdisk.model.units.KINDS).
 KINDS = {"h": "dimensionless", "t_end": "time", "energy_drift": "dimensionless",
@@ -120,12 +118,12 @@ def run(args) -> int:
     from rollingdisk.util.files import check_writable
 
     disk = disk_from_args(args)
-    coulomb = _coulomb_ground(args, disk)
+    coulomb = coulomb_ground(args, disk)
     motion = start_from_args(args, "simulate")
     if args.out is not None:
         check_writable(args.out, name="--out")
     if coulomb is not None:
-        record, transitions = _run_coulomb(args, disk, coulomb, motion)
+        record, transitions = run_coulomb(args, disk, coulomb, motion)
         keys = ("t_end", "n_steps", "mode_end", "energy_balance", "theta_min", "theta_max",
                 "wall_time_s")
     else:
@@ -176,12 +174,6 @@ def _with_si(record: dict, disk) -> dict:
     return out
 
 
-def _bar(args):
-    from rollingdisk.util.progress import ProgressBar
-
-    return ProgressBar(quiet=args.json)
-
-
 def _run_ideal(args, disk, motion) -> dict:
     """Rough or smooth ground: stream the run (CSV, measurements) and summarize it."""
     import rollingdisk as rd
@@ -196,7 +188,7 @@ def _run_ideal(args, disk, motion) -> dict:
                    error_control=args.error_control)
     if motion is None:
         y0, _ = initial_state(args, args.ground, "simulate")
-    bar = _bar(args)
+    bar = progress_bar(args)
     csv_cm = (atomic_file(args.out, "w", newline="") if args.out is not None
               else contextlib.nullcontext())
     try:
@@ -225,76 +217,3 @@ def _run_ideal(args, disk, motion) -> dict:
         "wall_time_s": traj.wall_time, "method": traj.method,
     }
     return {k: finite_or_none(v) for k, v in record.items()}
-
-
-def _coulomb_ground(args, disk):
-    """The :class:`~rollingdisk.friction.ground.Coulomb` ground the options ask for, or None."""
-    extra = [f"--{n.replace('_', '-')}" for n in FRICTION if getattr(args, n) is not None]
-    if args.ground != "coulomb":
-        if extra:
-            raise CLIError(f"rollingdisk simulate: {', '.join(extra)} need --ground coulomb")
-        return None
-    if args.mu is None:
-        raise CLIError("rollingdisk simulate: --ground coulomb needs --mu (static friction "
-                       "coefficient, e.g. --mu 0.3)")
-    if args.method not in ("auto", "dop853") or args.error_control != "full":
-        raise CLIError("rollingdisk simulate: --method and --error-control are for rough and "
-                       "smooth ground; coulomb ground has its own hybrid integrator")
-    import rollingdisk as rd
-
-    return rd.Coulomb(args.mu, args.mu_k,
-                      rolling_resistance=resolve_length(args.rolling_resistance, disk,
-                                                        "--rolling-resistance"),
-                      pivot=resolve_length(args.pivot, disk, "--pivot"), air=args.air)
-
-
-def _coulomb_state(args, disk, motion) -> list[float]:
-    """The start on Coulomb ground (the smooth layout, with the velocity of C)."""
-    from rollingdisk.friction.coulomb import rolling_state
-    from rollingdisk.model.state import state_index
-
-    if motion is None:
-        y, named = initial_state(args, "smooth", "simulate")
-        if not {"V_X", "V_Y"} & named:  # the rolling velocity of C (eq. 37)
-            return list(rolling_state(disk, [y[0], y[1], *y[4:]]))
-        return y
-    y = list(rolling_state(disk, motion.initial_state()))
-    y[state_index("smooth", "theta")] += args.perturb
-    y[state_index("smooth", "omega1")] += args.kick
-    return y
-
-
-def _run_coulomb(args, disk, ground, motion) -> tuple[dict, list]:
-    """The hybrid rolling/sliding run; the CSV is written last (a failure leaves none)."""
-    from rollingdisk.friction.coulomb import MODE_NAMES
-    from rollingdisk.friction.hybrid import energy_balance, simulate_coulomb
-    from rollingdisk.integrate.stream import write_columns
-    from rollingdisk.util.files import atomic_file
-
-    y0 = _coulomb_state(args, disk, motion)
-    options = {k: getattr(args, k) for k in ("rtol", "atol") if getattr(args, k) is not None}
-    bar = _bar(args)
-    try:
-        traj = simulate_coulomb(disk, ground, (0.0, args.t_end), y0, progress=bar,
-                                max_steps=200_000 if args.max_steps is None else
-                                args.max_steps, max_wall_time=args.max_wall_time, **options)
-    finally:
-        bar.close()
-    transitions = [x.as_dict() for x in traj.transitions]
-    record = {
-        "status": traj.status, "message": traj.message, "ground": "coulomb",
-        **{k: v for k, v in ground.as_dict().items() if k != "ground"},
-        "h": disk.h, "t_end": float(traj.t[-1]), "n_steps": traj.n_steps,
-        "mode_end": MODE_NAMES[int(traj.mode[-1])], "transitions": transitions,
-        "energy_balance": energy_balance(traj),
-        "dissipated": {k: float(v[-1]) for k, v in traj.dissipated.items()},
-        "theta_min": float(min(traj.theta)), "theta_max": float(max(traj.theta)),
-        "wall_time_s": traj.wall_time, "method": traj.method,
-    }
-    record = {k: finite_or_none(v) for k, v in record.items()}
-    if args.out is not None:
-        si = has_scale(disk)
-        with atomic_file(args.out, "w", newline="") as csv:
-            write_columns(csv, traj.as_columns(si=si),
-                          units=traj.csv_header(si=True) if si else None)
-    return record, transitions

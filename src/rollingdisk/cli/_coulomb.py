@@ -1,0 +1,85 @@
+"""``rollingdisk simulate --ground coulomb``: the Coulomb ground, its start and its run (a
+helper of :mod:`rollingdisk.cli.simulate`; the physics is :mod:`rollingdisk.friction`)."""
+
+from __future__ import annotations
+
+from rollingdisk.cli._args import CLIError, initial_state, resolve_length
+from rollingdisk.cli._format import finite_or_none, has_scale, progress_bar
+
+__all__ = ["FRICTION", "coulomb_ground", "run_coulomb"]
+
+#: The options that describe the friction (they need --ground coulomb).
+FRICTION = ("mu", "mu_k", "rolling_resistance", "pivot", "air")
+
+
+def coulomb_ground(args, disk):
+    """The :class:`~rollingdisk.friction.ground.Coulomb` ground the options ask for, or None."""
+    extra = [f"--{n.replace('_', '-')}" for n in FRICTION if getattr(args, n) is not None]
+    if args.ground != "coulomb":
+        if extra:
+            raise CLIError(f"rollingdisk simulate: {', '.join(extra)} need --ground coulomb")
+        return None
+    if args.mu is None:
+        raise CLIError("rollingdisk simulate: --ground coulomb needs --mu (static friction "
+                       "coefficient, e.g. --mu 0.3)")
+    if args.method not in ("auto", "dop853") or args.error_control != "full":
+        raise CLIError("rollingdisk simulate: --method and --error-control are for rough and "
+                       "smooth ground; coulomb ground has its own hybrid integrator")
+    import rollingdisk as rd
+
+    return rd.Coulomb(args.mu, args.mu_k,
+                      rolling_resistance=resolve_length(args.rolling_resistance, disk,
+                                                        "--rolling-resistance"),
+                      pivot=resolve_length(args.pivot, disk, "--pivot"), air=args.air)
+
+
+def _coulomb_state(args, disk, motion) -> list[float]:
+    """The start on Coulomb ground (the smooth layout, with the velocity of C)."""
+    from rollingdisk.friction.coulomb import rolling_state
+    from rollingdisk.model.state import state_index
+
+    if motion is None:
+        y, named = initial_state(args, "smooth", "simulate")
+        if not {"V_X", "V_Y"} & named:  # the rolling velocity of C (eq. 37)
+            return list(rolling_state(disk, [y[0], y[1], *y[4:]]))
+        return y
+    y = list(rolling_state(disk, motion.initial_state()))
+    y[state_index("smooth", "theta")] += args.perturb
+    y[state_index("smooth", "omega1")] += args.kick
+    return y
+
+
+def run_coulomb(args, disk, ground, motion) -> tuple[dict, list]:
+    """The hybrid rolling/sliding run; the CSV is written last (a failure leaves none)."""
+    from rollingdisk.friction.coulomb import MODE_NAMES
+    from rollingdisk.friction.hybrid import energy_balance, simulate_coulomb
+    from rollingdisk.integrate.stream import write_columns
+    from rollingdisk.util.files import atomic_file
+
+    y0 = _coulomb_state(args, disk, motion)
+    options = {k: getattr(args, k) for k in ("rtol", "atol") if getattr(args, k) is not None}
+    bar = progress_bar(args)
+    try:
+        traj = simulate_coulomb(disk, ground, (0.0, args.t_end), y0, progress=bar,
+                                max_steps=200_000 if args.max_steps is None else
+                                args.max_steps, max_wall_time=args.max_wall_time, **options)
+    finally:
+        bar.close()
+    transitions = [x.as_dict() for x in traj.transitions]
+    record = {
+        "status": traj.status, "message": traj.message, "ground": "coulomb",
+        **{k: v for k, v in ground.as_dict().items() if k != "ground"},
+        "h": disk.h, "t_end": float(traj.t[-1]), "n_steps": traj.n_steps,
+        "mode_end": MODE_NAMES[int(traj.mode[-1])], "transitions": transitions,
+        "energy_balance": energy_balance(traj),
+        "dissipated": {k: float(v[-1]) for k, v in traj.dissipated.items()},
+        "theta_min": float(min(traj.theta)), "theta_max": float(max(traj.theta)),
+        "wall_time_s": traj.wall_time, "method": traj.method,
+    }
+    record = {k: finite_or_none(v) for k, v in record.items()}
+    if args.out is not None:
+        si = has_scale(disk)
+        with atomic_file(args.out, "w", newline="") as csv:
+            write_columns(csv, traj.as_columns(si=si),
+                          units=traj.csv_header(si=True) if si else None)
+    return record, transitions
