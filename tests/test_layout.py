@@ -178,3 +178,15 @@ def test_import_rollingdisk_loads_no_numba_sympy_or_matplotlib():
     env = dict(os.environ, PYTHONPATH=str(SRC))  # this checkout, whatever is installed
     res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)
     assert res.returncode == 0, res.stderr
+
+
+def test_every_package_init_only_re_exports():
+    """A subpackage's ``__init__`` holds its docstring, imports and ``__all__``, no code (the
+    root adds ``__version__`` from the package metadata)."""
+    allowed = (ast.Import, ast.ImportFrom, ast.Expr, ast.Assign, ast.AnnAssign, ast.Try)
+    for path in PKG.rglob("__init__.py"):
+        for node in ast.parse(path.read_text()).body:
+            assert isinstance(node, allowed), f"{path}:{node.lineno} {type(node).__name__}"
+            if isinstance(node, ast.Assign):
+                names = [t.id for t in node.targets if isinstance(t, ast.Name)]
+                assert names in (["__all__"], ["__version__"]), f"{path}:{node.lineno} {names}"
