@@ -6,7 +6,7 @@ from __future__ import annotations
 from rollingdisk.cli._args import CLIError, initial_state, resolve_length
 from rollingdisk.cli._format import finite_or_none, has_scale, progress_bar
 
-__all__ = ["FRICTION", "coulomb_ground", "run_coulomb"]
+__all__ = ["FRICTION", "coulomb_ground", "run_coulomb", "run_until_rest"]
 
 #: The options that describe the friction (they need --ground coulomb).
 FRICTION = ("mu", "mu_k", "rolling_resistance", "pivot", "air")
@@ -15,6 +15,8 @@ FRICTION = ("mu", "mu_k", "rolling_resistance", "pivot", "air")
 def coulomb_ground(args, disk):
     """The :class:`~rollingdisk.friction.ground.Coulomb` ground the options ask for, or None."""
     extra = [f"--{n.replace('_', '-')}" for n in FRICTION if getattr(args, n) is not None]
+    if getattr(args, "until_rest", False):
+        extra.append("--until-rest")
     if args.ground != "coulomb":
         if extra:
             raise CLIError(f"rollingdisk simulate: {', '.join(extra)} need --ground coulomb")
@@ -83,3 +85,27 @@ def run_coulomb(args, disk, ground, motion) -> tuple[dict, list]:
             write_columns(csv, traj.as_columns(si=si),
                           units=traj.csv_header(si=True) if si else None)
     return record, transitions
+
+
+def run_until_rest(args, disk, ground, motion) -> tuple[dict, list]:
+    """``--until-rest``: the motion through every phase to rest (or the end time) with
+    :func:`rollingdisk.friction.motion.simulate_to_rest`; its summary and phase changes."""
+    from rollingdisk.friction.motion import simulate_to_rest
+
+    if args.out is not None:
+        raise CLIError("rollingdisk simulate: --out is not written with --until-rest (a run "
+                       "of several phases has no single state layout); use --json")
+    y0 = _coulomb_state(args, disk, motion)
+    res = simulate_to_rest(disk, ground, (0.0, args.t_end), y0, e=args.restitution,
+                           max_wall=args.max_wall_time)
+    transitions = [x.as_dict() for x in res.transitions]
+    record = {
+        "status": res.status, "message": res.message, "ground": "coulomb",
+        **{k: v for k, v in ground.as_dict().items() if k != "ground"},
+        "h": disk.h, "restitution": args.restitution, "t_end": float(res.t_end),
+        "transitions": transitions, "impacts": [x.as_dict() for x in res.impacts],
+        "n_impacts": len(res.impacts), "energy_balance": float(res.energy_balance),
+        "impact_loss": float(res.impact_loss), "dissipated_total": float(res.dissipated),
+        "wall_time_s": float(res.wall_time),
+    }
+    return {k: finite_or_none(v) for k, v in record.items()}, transitions

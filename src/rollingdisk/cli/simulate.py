@@ -29,7 +29,7 @@ from rollingdisk.cli._args import (
     start_from_args,
     t_end_arg,
 )
-from rollingdisk.cli._coulomb import coulomb_ground, run_coulomb
+from rollingdisk.cli._coulomb import coulomb_ground, run_coulomb, run_until_rest
 from rollingdisk.cli._format import (
     disk_fields,
     disk_line,
@@ -82,6 +82,14 @@ def configure(sub):
                    "moment per angular speed, units m a^(3/2) g^(1/2); c = K mu_air a^(3/2) / "
                    "(m g^(1/2)) with K = 1.28113 derived, about 1.2e-7 for Euler's disk in "
                    "air)")
+    c.add_argument("--until-rest", dest="until_rest", action="store_true",
+                   help="go on past lift-off, edge contact and falling flat: flight, impacts "
+                   "(restitution --restitution, friction --mu-k), rim changes and the flat "
+                   "disk sliding, until the disk is at rest or --t-end (docs/motion.md); "
+                   "JSON lists every phase change and impact and the energy balance")
+    c.add_argument("--restitution", type=real("restitution", low=0.0, high=1.0), default=0.5,
+                   help="coefficient of restitution of the impacts with --until-rest, in "
+                   "[0, 1] (default 0.5)")
     add_perturbation_args(p)
     t_end_arg(p, high=SIMULATE_T_END_MAX)
     add_tolerance_args(p)
@@ -122,7 +130,11 @@ def run(args) -> int:
     motion = start_from_args(args, "simulate")
     if args.out is not None:
         check_writable(args.out, name="--out")
-    if coulomb is not None:
+    if coulomb is not None and args.until_rest:
+        record, transitions = run_until_rest(args, disk, coulomb, motion)
+        keys = ("t_end", "n_impacts", "energy_balance", "impact_loss", "dissipated_total",
+                "wall_time_s")
+    elif coulomb is not None:
         record, transitions = run_coulomb(args, disk, coulomb, motion)
         keys = ("t_end", "n_steps", "mode_end", "energy_balance", "theta_min", "theta_max",
                 "wall_time_s")

@@ -95,6 +95,12 @@ class ImpactRecord:
     energy_lost: float
     restitution: float
 
+    def as_dict(self) -> dict:
+        """``{"t", "kind", "impulse", "energy_lost", "restitution"}`` (JSON-ready)."""
+        return {"t": float(self.t), "kind": self.kind,
+                "impulse": [float(x) for x in self.impulse],
+                "energy_lost": float(self.energy_lost), "restitution": float(self.restitution)}
+
     def __repr__(self) -> str:
         return (f"ImpactRecord(t={self.t:.6g}, kind={self.kind!r}, "
                 f"Lam_N={self.impulse[2]:.4g}, energy_lost={self.energy_lost:.4g})")
@@ -176,7 +182,8 @@ class MotionResult:
     status : str
         An outcome name (:mod:`rollingdisk.model.outcomes`): ``"at-rest"``,
         ``"completed"`` (the end time, or the ``decide`` rule of :func:`toss`), a guard of
-        ``stop_at``, ``"step-budget"`` (``max_segments`` or ``max_wall`` spent) or
+        ``stop_at``, ``"step-budget"`` (``max_segments`` spent), ``"time-budget"``
+        (``max_wall`` spent) or
         ``"failed"``.
     message : str
     t_end : float
@@ -503,7 +510,7 @@ def simulate_to_rest(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     max_segments : int
         Budget of segments (contact, flight, flat); beyond it: ``"step-budget"``.
     max_wall : float
-        Budget of wall-clock seconds; beyond it: ``"step-budget"``.
+        Budget of wall-clock seconds; beyond it: ``"time-budget"``.
     alpha_flat : float
         Tilt ``pi/2 - |theta|`` [rad] at which a disk on its rim counts as fallen flat
         (then a face impact); ``(0, 0.5]``.
@@ -653,7 +660,7 @@ class _Motion:
                 return self._result("step-budget", f"segment budget exhausted: "
                                     f"{self.max_segments} segments by t = {t:.12g}", t, s)
             if time.perf_counter() - self.wall0 > self.max_wall:
-                return self._result("step-budget", f"wall-time budget exhausted: "
+                return self._result("time-budget", f"wall-time budget exhausted: "
                                     f"{self.max_wall:g} s by t = {t:.12g}", t, s)
             if self.decide is not None:
                 why = self.decide(_state_energy(h, s), s)
