@@ -1,7 +1,9 @@
-"""`rollingdisk toss` and `simulate --until-rest`: the commands past the guards (the physics is
+"""``rollingdisk toss`` and ``simulate --until-rest``: the commands past the guards (the
+physics is tested in tests/test_motion.py and tests/test_impact.py).
 
 Sources of truth: a reproducible seed gives the same counts twice; the counts add up to the
-tosses asked for and the frequencies to one; bad input is one line and exit 2.
+tosses asked for and the frequencies to one; the energy balance closes over every phase of a
+run to rest; bad input is one line and exit 2.
 """
 
 import json
