@@ -50,7 +50,7 @@ from rollingdisk.model.disk import Disk
 from rollingdisk.model.equations import _check_disk
 from rollingdisk.model.geometry import _geometry
 from rollingdisk.model.state import _as_state
-from rollingdisk.util.checks import check_real, real_array
+from rollingdisk.util.checks import check_real, check_span, real_array
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["simulate_coulomb", "slip_direction", "energy_balance", "DISSIPATION_TERMS"]
@@ -334,14 +334,7 @@ def _check_arguments(disk, ground, t_span, y0, **options):
                                  f"{disk!r}")
     _check_coulomb(ground)
     y = _check_state(disk, "smooth", real_array("y0", y0))
-    try:
-        t0, t1 = (float(v) for v in t_span)
-    except (TypeError, ValueError, OverflowError):
-        raise ParameterError(f"t_span must be a pair (t0, t1) of real numbers, got {t_span!r}") \
-            from None
-    if not (math.isfinite(t0) and math.isfinite(t1) and t1 > t0):
-        raise ParameterError(f"t_span must be a pair (t0, t1) of finite numbers with t1 > t0, "
-                             f"got {t_span!r}")
+    t0, t1 = check_span(t_span)
     o = dict(options)
     o["rtol"] = check_real("rtol", o["rtol"], low=0.0, low_open=True)
     o["atol"] = check_real("atol", o["atol"], low=0.0, low_open=True)

@@ -42,7 +42,7 @@ from rollingdisk.friction.impact import (
 )
 from rollingdisk.model.disk import Disk
 from rollingdisk.model.outcomes import outcome
-from rollingdisk.util.checks import check_int, check_real
+from rollingdisk.util.checks import check_int, check_real, check_span
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["simulate_to_rest", "MotionResult", "FlightSegment", "FlatSegment",
@@ -453,13 +453,7 @@ def _check_inputs(disk, ground, t_span, y0, e, mu_impact, stop_at):
     if not isinstance(ground, Coulomb):
         raise ParameterTypeError(f"ground must be a rollingdisk.Coulomb(...) value, got "
                                  f"{ground!r}")
-    try:
-        t0, t1 = (float(v) for v in t_span)
-    except (TypeError, ValueError):
-        raise ParameterError(f"t_span must be a pair (t0, t1) of real numbers, got "
-                             f"{t_span!r}") from None
-    if not (math.isfinite(t0) and math.isfinite(t1) and t1 > t0):
-        raise ParameterError(f"t_span must be finite with t1 > t0, got {t_span!r}")
+    t0, t1 = check_span(t_span)
     e = check_real("e", e, low=0.0, high=1.0)
     mu = ground.mu_k if mu_impact is None else check_real("mu_impact", mu_impact, low=0.0)
     if isinstance(stop_at, str):

@@ -31,7 +31,7 @@ from rollingdisk.integrate.trajectory import Trajectory
 from rollingdisk.model.disk import Disk, check_ground
 from rollingdisk.model.equations import _check_disk, energy, equations_of_motion
 from rollingdisk.model.state import state_index, state_names
-from rollingdisk.util.checks import check_real, real_array
+from rollingdisk.util.checks import check_real, check_span, real_array
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["DEFAULT_RTOL", "DEFAULT_ATOL", "DEFAULT_MAX_STEPS", "MAX_T", "simulate",
@@ -285,14 +285,7 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
     _check_disk(disk)
     ground = check_ground(ground)
     y = _check_state(disk, ground, y0)
-    try:
-        t0, t1 = (float(v) for v in t_span)
-    except (TypeError, ValueError):
-        raise ParameterError(f"t_span must be a pair (t0, t1) of real numbers, got "
-                             f"{t_span!r}") from None
-    if not (math.isfinite(t0) and math.isfinite(t1) and t1 > t0):
-        raise ParameterError(f"t_span must be a pair (t0, t1) of finite numbers with t1 > t0,"
-                             f" got {t_span!r}")
+    t0, t1 = check_span(t_span)
     if max(abs(t0), abs(t1)) > MAX_T:
         raise ParameterError(f"t_span must lie within [-{MAX_T:g}, {MAX_T:g}], got "
                              f"{t_span!r}")

@@ -6,7 +6,7 @@ import math
 
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
-__all__ = ["check_real", "check_int", "real_array"]
+__all__ = ["check_real", "check_int", "check_span", "real_array"]
 
 
 def check_real(name: str, value, *, low: float | None = None, high: float | None = None,
@@ -125,3 +125,17 @@ def _is_numpy_real(value) -> bool:
     return isinstance(value, (np.integer, np.floating)) or (
         isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf"
     )
+
+
+def check_span(t_span) -> tuple[float, float]:
+    """``t_span`` as ``(t0, t1)`` floats, finite with ``t1 > t0``, or ParameterError (a
+    TypeError-free message for anything that is not a pair of real numbers)."""
+    try:
+        t0, t1 = (float(v) for v in t_span)
+    except (TypeError, ValueError, OverflowError):
+        raise ParameterError(f"t_span must be a pair (t0, t1) of real numbers, got "
+                             f"{t_span!r}") from None
+    if not (math.isfinite(t0) and math.isfinite(t1) and t1 > t0):
+        raise ParameterError(f"t_span must be a pair (t0, t1) of finite numbers with t1 > t0,"
+                             f" got {t_span!r}")
+    return t0, t1
