@@ -352,7 +352,8 @@ def _scene(traj, fig, n_frames: int, title: str | None):
     return tf, draw_scene(fig, tf, frames, paths, head, disk_of(traj))
 
 
-def draw_scene(fig, tf, frames, paths, head: str, disk=None) -> Callable[[int], list]:
+def draw_scene(fig, tf, frames, paths, head: str | Callable[[int], str],
+               disk=None) -> Callable[[int], list]:
     """The 3D axes on ``fig`` and ``draw(i)``, which paints frame ``i``: the plane, the paths
     up to ``tf[i]``, the disk ``frames[i]`` (:func:`draw_disk`) and the clock in the title.
 
@@ -366,8 +367,8 @@ def draw_scene(fig, tf, frames, paths, head: str, disk=None) -> Callable[[int], 
     paths : (t, X_P, Y_P, X_C, Y_C) of 1-D arrays
         The paths of the contact point P (red) and of C projected on the plane (dashed),
         in time order; NaN breaks a path (P in flight).
-    head : str
-        The title before the clock.
+    head : str or callable
+        The title before the clock, or ``head(i)`` giving it for frame ``i``.
     disk : Disk, optional
         With a physical scale the clock runs in seconds, else in ``sqrt(a/g)``.
 
@@ -405,7 +406,8 @@ def draw_scene(fig, tf, frames, paths, head: str, disk=None) -> Callable[[int], 
         ax.set_zlim(z0, z1)
         ax.set_box_aspect((x1 - x0, y1 - y0, z1 - z0))
         ax.view_init(elev=28, azim=-60)
-        ax.set_title(f"{head}   {clock(ti)}", fontsize=9)
+        text = head(i) if callable(head) else head
+        ax.set_title(f"{text}   {clock(ti)}", fontsize=9)
         return []
 
     return draw
