@@ -167,3 +167,17 @@ def test_cli_errors_one_line_exit_2(tmp_path, monkeypatch, capsys, argv, needle)
     assert main(argv) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and needle in err
+
+
+def test_atlas_to_rest_section(quick_atlas):
+    """The run past the guards: at rest, E(0) = E(end) + impact losses + dissipated (the
+    energy balance), and the page has its section in the table of contents."""
+    result, _ = quick_atlas
+    m = result.motions["to_rest"]
+    assert m["status"] == "at-rest" and m["n_impacts"] >= 10 and m["n_rim_change"] >= 1
+    assert m["energy_initial"] == pytest.approx(
+        m["energy_final"] + m["impact_loss"] + m["dissipated"], abs=1e-9)
+    assert m["energy_balance"] <= 1e-9
+    html = result.index.read_text(encoding="utf-8")
+    assert 'href="#to-rest"' in html and 'id="to-rest"' in html
+    assert f"{m['n_impacts']} impacts" in html

@@ -58,6 +58,21 @@ def test_elastic_frictionless_bounces_conserve_energy():
     assert res.energy_balance <= 1e-9
 
 
+def test_elastic_frictionless_conserves_energy_over_100_bounces():
+    """The issue's done-when: e = 1, mu = 0 keeps the energy to 1e-9 over >= 100 impacts
+    (no Zeno capture, no impact loses anything, the balance is the energy itself)."""
+    s0 = [0, 0, 1.5, 0, 0.5, 0, 0.3, 0, 0, 0.7, 0.4, 0.2]
+    res = simulate_to_rest(rd.Disk(0.2), rd.Coulomb(0.0), (0, 150), s0, e=1.0,
+                           mu_impact=0.0)
+    assert res.status == "completed"
+    assert len(res.impacts) >= 100
+    assert all(i.restitution == 1.0 for i in res.impacts)
+    assert max(abs(i.energy_lost) for i in res.impacts) <= 1e-12
+    assert res.dissipated == 0.0
+    assert abs(res.energy_final - res.energy_initial) <= 1e-9
+    assert res.energy_balance <= 1e-9
+
+
 def test_rocking_upright_disk_follows_rim_change_ratio():
     h = 0.5
     y0 = [0, 0, 0, 0, 0, 0.2, 0, 0, 0, 0]  # tilted below arctan h, at rest: rocks

@@ -50,10 +50,15 @@ __all__ = ["AtlasResult", "ATLAS_FILES", "build_atlas", "steady_trajectory"]
 ATLAS_FILES = ("thresholds.json", "existence.png", "stability.png", "varpi2.png",
                "all_omega30.png", "motion_stable.png", "motion_stable.gif",
                "motion_unstable.png", "motion_unstable.gif", "exact.png", "euler_disk.png",
-               "euler_disk.json", "euler_disk_chirp.png", "euler_disk.wav", "index.html")
+               "euler_disk.json", "euler_disk_chirp.png", "euler_disk.wav", "to_rest.gif",
+               "index.html")
 #: The atlas's sound of Euler's disk: the last seconds of the run in real time, at a rate
 #: that keeps the file near 350 KB (the whirr ends below 200 Hz on the toy).
 EULER_SOUND = {"rate": 22050, "speed": 1.0, "max_seconds": 8.0}
+#: The atlas's run past the guards (:func:`rollingdisk.friction.motion.simulate_to_rest`):
+#: a thick disk dropped from rest, tilted from upright, onto Coulomb ground; it bounces,
+#: rocks over its tread (rim changes) and settles upright.
+TO_REST = {"h": 0.3, "Z_C": 1.6, "theta": 0.12, "e": 0.5, "mu": 0.5, "t_max": 100.0}
 
 
 @dataclass(frozen=True)
@@ -201,7 +206,7 @@ def build_atlas(disk: Disk | float = DEFAULT_H, out_dir="atlas", *, quick: bool 
     disk = disk if isinstance(disk, Disk) else Disk(h)
     target = check_replaceable(out_dir, ATLAS_FILES, name="out_dir")
     chosen = example_motions(h)  # before any work: fails for a disk with no unstable circle
-    pr = _Progress(9, stream=stream, enabled=bool(progress))
+    pr = _Progress(10, stream=stream, enabled=bool(progress))
     try:
         with atomic_dir(target) as out:
             files, motions = _write_atlas(disk, out, chosen, quick=bool(quick), pr=pr)
@@ -320,6 +325,10 @@ def _motion_steps(disk, out, chosen, *, quick, pr, files, dpi, euler) -> dict:
         pr.step("exact motion: quadrature, rosette, backbone")
         motions["exact"] = _exact_section(chosen.stable, out, dpi, files)
         pr.done(f"period {motions['exact']['period']:.6g}")
+        pr.step("a disk let go to rest: bounces, rocking")
+        motions["to_rest"] = _to_rest_section(out, quick, files)
+        pr.done(f"{motions['to_rest']['n_impacts']} impacts, at rest at "
+                f"t = {motions['to_rest']['t_end']:.4g}")
         pr.step("Euler's disk (run alongside)")
         euler.join()
         if euler.exitcode != 0:
@@ -400,6 +409,31 @@ def _exact_section(motion, out: Path, dpi: int, files: list) -> dict:
             "delta_psi": ex.delta_psi, "status": ex.status,
             "largest_amplitude": float(np.nanmax(bb.amplitude)),
             "frequency_at_largest": float(bb.frequency[ok[-1]]), "varpi": varpi}
+
+
+def _to_rest_section(out: Path, quick: bool, files: list) -> dict:
+    """The run :data:`TO_REST` to rest (:func:`~rollingdisk.friction.motion.simulate_to_rest`),
+    its animation ``to_rest.gif`` (not when ``quick``) and its record for the page."""
+    from rollingdisk.friction.ground import Coulomb
+    from rollingdisk.friction.motion import FlightSegment, simulate_to_rest
+    from rollingdisk.plotting.motion_anim import animate_motion
+
+    r = TO_REST
+    s0 = [0.0, 0.0, r["Z_C"], 0.0, r["theta"], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+    res = simulate_to_rest(Disk(r["h"]), Coulomb(r["mu"]), (0.0, r["t_max"]), s0, e=r["e"])
+    if not quick:
+        animate_motion(res, out / "to_rest.gif", n_frames=120, fps=12, dpi=70,
+                       title=f"let go, h = {r['h']:g}")
+        files.append(out / "to_rest.gif")
+    kinds = [i.kind for i in res.impacts]
+    return {**r, "status": res.status, "message": res.message, "t_end": res.t_end,
+            "n_impacts": len(kinds), "n_rim": kinds.count("rim"),
+            "n_rim_change": kinds.count("rim-change"), "n_face": kinds.count("face"),
+            "n_flights": sum(isinstance(g, FlightSegment) for g in res.segments),
+            "n_segments": len(res.segments), "energy_initial": res.energy_initial,
+            "energy_final": res.energy_final, "impact_loss": res.impact_loss,
+            "dissipated": res.dissipated, "energy_balance": res.energy_balance,
+            "wall_time": res.wall_time, "gif": not quick}
 
 
 def _start_animation(traj, path, kw):
@@ -643,6 +677,7 @@ _SECTIONS = (("thresholds", "Stability thresholds"),
              ("all-omega30", "Stable for every &omega;<sub>30</sub>"),
              ("motions", "Two steady circles, simulated"),
              ("exact", "The stable circle at finite amplitude"),
+             ("to-rest", "Past the guards: a disk let go to rest"),
              ("euler-disk", "Euler's disk"),
              ("learn-more", "Learn more"),
              ("files", "Files"))
@@ -708,7 +743,7 @@ def _index_html(h, thr: dict, motions: dict, names: list) -> str:
     disk = h if hasattr(h, "radius") else None
     return "".join([_page_head(h, hv), _thresholds_section(thr, disk), _MAPS_SECTION,
                     _motions_section(motions), _exact_html(motions["exact"]),
-                    _page_tail(motions, names)])
+                    _to_rest_html(motions["to_rest"]), _page_tail(motions, names)])
 
 
 def _title(h, hv) -> str:
@@ -825,6 +860,34 @@ against amplitude, which starts at &varpi; and reaches
 {_fmt(ex['frequency_at_largest'], 5)} {_W} at amplitude
 {_deg(ex['largest_amplitude'], 3)}.</p>
 {_img("exact.png", "exact motion: theta over a period, rosette, backbone")}
+
+"""
+
+
+def _to_rest_html(m: dict) -> str:
+    """The section "Past the guards": the run :data:`TO_REST` and its numbers."""
+    gif = (_img("to_rest.gif", "a thick disk let go: it bounces, rocks and settles", 350)
+           if m["gif"] else '<p class="note">(The quick atlas draws no animation here.)</p>')
+    flat = " and falls flat" if m["n_face"] else ""
+    e = html.escape
+    return f"""<h2 id="to-rest">Past the guards: a disk let go to rest</h2>
+<p>The motions above stop at their guards (lift-off, the rim edge, falling flat);
+<code>simulate_to_rest</code> goes on through free flight, impacts (Newton&ndash;Coulomb,
+restitution e = {_fmt(m['e'], 3)}), rim changes and the flat disk, to rest
+(<code>rollingdisk simulate --ground coulomb --until-rest</code>,
+<code>docs/motion.md</code>). A thick disk, h = {_fmt(m['h'], 3)}, on Coulomb ground
+(&mu; = {_fmt(m['mu'], 3)}) is let go from rest with its centre at Z<sub>C</sub> =
+{_fmt(m['Z_C'], 3)} a, tilted {_deg(m['theta'], 3)} from upright: it bounces
+({m['n_rim']} rim impacts in {m['n_flights']} flights), then rocks over its tread
+({m['n_rim_change']} rim changes){flat}; end: <b>{e(m['status'])}</b>
+at t = {_fmt(m['t_end'])} {_T} ({e(m['message'])}).</p>
+<p>Energy [mga]: {_fmt(m['energy_initial'])} at the start, {_fmt(m['energy_final'])} at rest
+(the potential energy of the centre where it stops);
+{_fmt(m['impact_loss'])} lost in the {m['n_impacts']} impacts, {_fmt(m['dissipated'])}
+dissipated by friction in contact; the balance E + dissipated + impact losses holds to
+{_fmt(m['energy_balance'], 2)} (relative); {m['n_segments']} segments in
+{m['wall_time']:.2g} s.</p>
+{gif}
 
 """
 

@@ -33,7 +33,7 @@ from rollingdisk.util.checks import check_int, check_real
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["DiskPose", "body_frame", "disk_pose", "poses", "draw_disk", "animate",
-           "animation_html",
+           "animation_html", "draw_scene", "write_frames",
            "check_animation", "writer_for", "FRAMES_RANGE", "FPS_RANGE", "PIXEL_BUDGET"]
 
 #: Number of frames an animation may have.
@@ -92,7 +92,7 @@ class DiskPose:
 
 
 def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: float,
-              n: int = 48) -> DiskPose:
+              n: int = 48, *, Z_C: float | None = None) -> DiskPose:
     """Positions of the drawn disk for one state (eqs. 4, 5, 7).
 
     Parameters
@@ -103,6 +103,10 @@ def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: f
         The centre C on the plane and the three angles [rad].
     n : int
         Points on each rim circle.
+    Z_C : float, optional
+        Height of C for a disk off the contact (flight, flat on a face); then ``contact``
+        is the lowest point of the disk (the centre of the lower face when it lies flat).
+        Default: touching, ``Z_C = -z_P`` (eq. 7).
 
     Returns
     -------
@@ -112,7 +116,7 @@ def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: f
     xi, eta, zeta = body_frame(psi, theta)
     _, _, _, _, y_P, z_P = _geometry(h, theta)
     y_P, z_P = float(y_P), float(z_P)
-    C = np.array([X_C, Y_C, -z_P])  # eq. (7)
+    C = np.array([X_C, Y_C, -z_P if Z_C is None else float(Z_C)])  # eq. (7)
     # body-fixed radial directions: xi, zeta turned by phi about eta (Rodrigues, v _|_ eta)
     cf, sf = math.cos(phi), math.sin(phi)
     e1 = cf * xi - sf * zeta
@@ -122,8 +126,22 @@ def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: f
     rims = np.stack([C[:, None] - h * eta[:, None] + ring, C[:, None] + h * eta[:, None] + ring])
     marker = np.stack([C - h * eta + e1, C + h * eta + e1, C + h * eta - e1])
     y_dir = np.array([-math.sin(psi), math.cos(psi), 0.0])
-    P = C + y_P * y_dir + np.array([0.0, 0.0, z_P])  # eq. (5): Z_P = Z_C + z_P = 0
+    if Z_C is None:
+        P = C + y_P * y_dir + np.array([0.0, 0.0, z_P])  # eq. (5): Z_P = Z_C + z_P = 0
+    else:
+        P = _lowest_point(h, C, theta, eta, zeta)
     return DiskPose(C, rims, marker, P, eta)
+
+
+def _lowest_point(h, C, theta, eta, zeta) -> np.ndarray:
+    """The lowest point of the disk about C: on the lower rim (centre ``C -+ h eta``), the
+    point ``-sgn(cos theta) zeta`` from its centre (``Z = sin(theta) eta + cos(theta)
+    zeta``); the lower face's centre for a disk lying flat."""
+    st, ct = math.sin(theta), math.cos(theta)
+    c_low = C - (1.0 if st >= 0.0 else -1.0) * h * eta
+    if abs(ct) < 1e-12:
+        return c_low
+    return c_low - (1.0 if ct > 0.0 else -1.0) * zeta
 
 
 def poses(traj, n_frames: int = 60, *, n: int = 48) -> tuple[np.ndarray, list[DiskPose]]:
@@ -151,13 +169,14 @@ def poses(traj, n_frames: int = 60, *, n: int = 48) -> tuple[np.ndarray, list[Di
                           s["phi"][i], n=n) for i in range(len(tf))]
 
 
-def _limits(traj, frames, pad: float = 0.3):
-    """Axis limits that hold the paths of C and P and every drawn disk, with equal scales."""
+def _limits(paths, frames, pad: float = 0.3):
+    """Axis limits that hold the paths (``(t, X_P, Y_P, X_C, Y_C)``, NaN where a path is
+    broken) and every drawn disk, with equal scales."""
     rims = np.concatenate([np.concatenate(f.rims, axis=1) for f in frames], axis=1)  # (3, N)
-    XP, YP = trajectory_series(traj, "X_P"), trajectory_series(traj, "Y_P")
-    XC, YC = trajectory_series(traj, "X_C"), trajectory_series(traj, "Y_C")
+    _, XP, YP, XC, YC = paths
     xs = np.concatenate([XP, XC, rims[0]])
     ys = np.concatenate([YP, YC, rims[1]])
+    xs, ys = xs[np.isfinite(xs)], ys[np.isfinite(ys)]
     cx, cy = 0.5 * (xs.min() + xs.max()), 0.5 * (ys.min() + ys.max())
     half = 0.5 * max(xs.max() - xs.min(), ys.max() - ys.min()) + pad
     return (cx - half, cx + half), (cy - half, cy + half), (0.0, rims[2].max() + pad)
@@ -327,14 +346,41 @@ def _check_trajectory(traj) -> None:
 def _scene(traj, fig, n_frames: int, title: str | None):
     """The 3D axes on ``fig`` and ``(frame times, draw)``: ``draw(i)`` paints frame ``i``."""
     tf, frames = poses(traj, n_frames)
-    t = np.asarray(traj.t, float)
-    XP, YP = trajectory_series(traj, "X_P"), trajectory_series(traj, "Y_P")
-    XC, YC = trajectory_series(traj, "X_C"), trajectory_series(traj, "Y_C")
-    (x0, x1), (y0, y1), (z0, z1) = _limits(traj, frames)
-    ax = fig.add_subplot(1, 1, 1, projection="3d")
+    paths = (np.asarray(traj.t, float),
+             *(trajectory_series(traj, k) for k in ("X_P", "Y_P", "X_C", "Y_C")))
     head = title if title is not None else f"{traj.ground} ground, h = {traj.disk.h:.4g}"
+    return tf, draw_scene(fig, tf, frames, paths, head, disk_of(traj))
+
+
+def draw_scene(fig, tf, frames, paths, head: str | Callable[[int], str],
+               disk=None) -> Callable[[int], list]:
+    """The 3D axes on ``fig`` and ``draw(i)``, which paints frame ``i``: the plane, the paths
+    up to ``tf[i]``, the disk ``frames[i]`` (:func:`draw_disk`) and the clock in the title.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+    tf : (n,) ndarray
+        Frame times [``sqrt(a/g)``].
+    frames : list of DiskPose
+        One per frame.
+    paths : (t, X_P, Y_P, X_C, Y_C) of 1-D arrays
+        The paths of the contact point P (red) and of C projected on the plane (dashed),
+        in time order; NaN breaks a path (P in flight).
+    head : str or callable
+        The title before the clock, or ``head(i)`` giving it for frame ``i``.
+    disk : Disk, optional
+        With a physical scale the clock runs in seconds, else in ``sqrt(a/g)``.
+
+    Returns
+    -------
+    callable
+    """
+    t, XP, YP, XC, YC = (np.asarray(p, float) for p in paths)
+    (x0, x1), (y0, y1), (z0, z1) = _limits((t, XP, YP, XC, YC), frames)
+    ax = fig.add_subplot(1, 1, 1, projection="3d")
     # the clock in the title: seconds when the disk has a physical scale, else sqrt(a/g)
-    ft = si_factor(disk_of(traj), "time")
+    ft = si_factor(disk, "time")
     clock = ((lambda ti: f"t = {ti * ft:6.2f} s") if ft != 1.0
              else (lambda ti: f"t = {ti:6.2f} √(a/g)"))
 
@@ -360,10 +406,11 @@ def _scene(traj, fig, n_frames: int, title: str | None):
         ax.set_zlim(z0, z1)
         ax.set_box_aspect((x1 - x0, y1 - y0, z1 - z0))
         ax.view_init(elev=28, azim=-60)
-        ax.set_title(f"{head}   {clock(ti)}", fontsize=9)
+        text = head(i) if callable(head) else head
+        ax.set_title(f"{text}   {clock(ti)}", fontsize=9)
         return []
 
-    return tf, draw
+    return draw
 
 
 def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
@@ -397,7 +444,7 @@ def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
     Path
         ``out``.
     """
-    from rollingdisk.util.files import atomic_file, check_writable
+    from rollingdisk.util.files import check_writable
 
     _check_trajectory(traj)
     n_frames, fps, dpi, size = check_animation(n_frames, fps, dpi, size)
@@ -408,18 +455,28 @@ def animate(traj, out, *, n_frames: int = 60, fps: int = 15, dpi: int = 70,
 
     fig = Figure(figsize=size)
     tf, draw = _scene(traj, fig, n_frames, title)
+    return write_frames(fig, len(tf), draw, out, writer, dpi, progress)
+
+
+def write_frames(fig, n: int, draw: Callable[[int], object], out: Path, writer, dpi: int,
+                 progress: Callable[[int, int], None] | None = None) -> Path:
+    """Paint frames ``draw(0) .. draw(n - 1)`` on ``fig`` into ``out`` with ``writer``
+    (:func:`writer_for`), under a temporary name renamed at the end: the file appears
+    whole or not at all.  Returns ``out``."""
     import matplotlib as mpl
+
+    from rollingdisk.util.files import atomic_file
 
     # not writer.saving(): it finishes the file even when interrupted, and an exception in
     # that clean-up would hide the interruption; here an unfinished file is just dropped
     with atomic_file(out, mode=None) as tmp, mpl.rc_context({"savefig.bbox": None}):
         writer.setup(fig, str(tmp), dpi)
         try:
-            for i in range(len(tf)):
+            for i in range(n):
                 draw(i)
                 writer.grab_frame()
                 if progress:
-                    progress(i + 1, len(tf))
+                    progress(i + 1, n)
         except BaseException:
             _abandon(writer)
             raise
