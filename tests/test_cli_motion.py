@@ -49,6 +49,22 @@ def test_simulate_until_rest_goes_past_the_guards(capsys):
     assert [x["to"] for x in rec["transitions"]][-2:] == ["flat", "rest"]
 
 
+def test_until_rest_animates_the_whole_motion(tmp_path, capsys):
+    from PIL import Image
+
+    gif = tmp_path / "rest.gif"
+    assert main(["simulate", "--ground", "coulomb", "--mu", "0.5", "--h", "0.1", "--state",
+                 "theta=0.3", "--t-end", "100", "--until-rest", "--animate", str(gif),
+                 "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["animation"] == str(gif) and rec["status"] == "at-rest"
+    with Image.open(gif) as im:
+        assert im.n_frames > 10
+    assert main(["simulate", "--ground", "coulomb", "--mu", "0.5", "--h", "0.1", "--state",
+                 "theta=0.3", "--t-end", "1", "--animate", str(tmp_path / "x.gif")]) == 2
+    assert "--until-rest" in capsys.readouterr().err
+
+
 def test_until_rest_needs_coulomb_ground(capsys):
     assert main(["simulate", "--h", "0.1", "--theta0", "30deg", "--Omega0", "1",
                  "--t-end", "1", "--until-rest"]) == 2

@@ -17,6 +17,9 @@ def coulomb_ground(args, disk):
     extra = [f"--{n.replace('_', '-')}" for n in FRICTION if getattr(args, n) is not None]
     if getattr(args, "until_rest", False):
         extra.append("--until-rest")
+    if getattr(args, "animate", None) is not None and not getattr(args, "until_rest", False):
+        raise CLIError("rollingdisk simulate: --animate needs --until-rest (use "
+                       "rollingdisk animate for a steady motion)")
     if args.ground != "coulomb":
         if extra:
             raise CLIError(f"rollingdisk simulate: {', '.join(extra)} need --ground coulomb")
@@ -95,9 +98,17 @@ def run_until_rest(args, disk, ground, motion) -> tuple[dict, list]:
     if args.out is not None:
         raise CLIError("rollingdisk simulate: --out is not written with --until-rest (a run "
                        "of several phases has no single state layout); use --json")
+    if args.animate is not None:
+        from rollingdisk.util.files import check_writable
+
+        check_writable(args.animate, name="--animate")
     y0 = _coulomb_state(args, disk, motion)
     res = simulate_to_rest(disk, ground, (0.0, args.t_end), y0, e=args.restitution,
                            max_wall=args.max_wall_time)
+    if args.animate is not None:
+        from rollingdisk.plotting.motion_anim import animate_motion
+
+        animate_motion(res, args.animate)
     transitions = [x.as_dict() for x in res.transitions]
     record = {
         "status": res.status, "message": res.message, "ground": "coulomb",
@@ -107,5 +118,6 @@ def run_until_rest(args, disk, ground, motion) -> tuple[dict, list]:
         "n_impacts": len(res.impacts), "energy_balance": float(res.energy_balance),
         "impact_loss": float(res.impact_loss), "dissipated_total": float(res.dissipated),
         "wall_time_s": float(res.wall_time),
+        **({"animation": args.animate} if args.animate is not None else {}),
     }
     return {k: finite_or_none(v) for k, v in record.items()}, transitions

@@ -87,6 +87,9 @@ def configure(sub):
                    "(restitution --restitution, friction --mu-k), rim changes and the flat "
                    "disk sliding, until the disk is at rest or --t-end (docs/motion.md); "
                    "JSON lists every phase change and impact and the energy balance")
+    c.add_argument("--animate", default=None, metavar="FILE.gif",
+                   help="with --until-rest: a 3D animation of the whole motion (flight, "
+                   "bounces, rolling, the flat disk) to FILE.gif")
     c.add_argument("--restitution", type=real("restitution", low=0.0, high=1.0), default=0.5,
                    help="coefficient of restitution of the impacts with --until-rest, in "
                    "[0, 1] (default 0.5)")
