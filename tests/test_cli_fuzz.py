@@ -69,7 +69,10 @@ def _calls(seed, n):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("seed", [20261125])
-def test_random_hostile_calls_keep_the_contract(seed, tmp_path, capsys):
+def test_random_hostile_calls_keep_the_contract(seed, tmp_path, capsys, monkeypatch):
+    # a hostile value that replaces an --out path ("None", "nan") is a valid relative path:
+    # run where such outputs land in the test's own folder, never in the checkout
+    monkeypatch.chdir(tmp_path)
     for k, argv in enumerate(_calls(seed, 300)):
         tmp = tmp_path / f"call{k}"
         tmp.mkdir()
@@ -86,6 +89,7 @@ def test_random_hostile_calls_keep_the_contract(seed, tmp_path, capsys):
             assert len(lines) == 1, f"{where}: {lines}"
         if rc == 0 and "--json" in args:
             _strict(out)  # the whole of stdout is one JSON document
-        leftovers = [p.name for p in tmp.rglob(".*") if ".tmp" in p.name or ".old" in p.name]
+        leftovers = [p.name for p in tmp_path.rglob(".*")
+                     if ".tmp" in p.name or ".old" in p.name]
         assert not leftovers, f"{where}: {leftovers}"
         assert wall < 120.0, f"{where}: {wall:.0f} s (hang guard)"
