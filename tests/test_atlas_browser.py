@@ -50,9 +50,12 @@ def atlas(request, tmp_path_factory):
 
 
 def test_a_coin_atlas_answers_in_si(atlas):
+    """SI where the disk has a size, the paper's units alone where it has none."""
     page = atlas.index.read_text(encoding="utf-8")
     if atlas.disk is not None and atlas.disk.radius is not None:
-        assert "m/s" in page and "rad/s" in page
+        assert "m/s" in page and "rad/s" in page and " mm " in page
+    else:
+        assert "rad/s" not in page and "m/s" not in page
 
 
 @pytest.fixture(scope="module")

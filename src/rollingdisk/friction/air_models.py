@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rollingdisk.friction.ground import angular_velocity_xyz
+from rollingdisk.model.disk import STANDARD_GRAVITY
 from rollingdisk.util.checks import check_real
 
 __all__ = ["BoundaryLayerAirDrag", "LoadRollingResistance", "air_coefficient_derived",
@@ -49,7 +50,7 @@ def _positive(name, value, *, low_open=True):
 
 
 def air_coefficient_derived(mu_air: float, radius: float, mass: float,
-                            gravity: float = 9.81) -> float:
+                            gravity: float = STANDARD_GRAVITY) -> float:
     """Coefficient ``c`` of :class:`rollingdisk.AirDrag` from the lubrication film.
 
     ``c = K mu_air a^(3/2) / (m g^(1/2))`` with ``K`` = :data:`FILM_CONSTANT` = 1.28113
@@ -115,7 +116,7 @@ class BoundaryLayerAirDrag:
 
     @classmethod
     def from_si(cls, mu_air: float = 1.81e-5, rho_air: float = 1.2, radius: float = 0.0375,
-                mass: float = 0.45, gravity: float = 9.81,
+                mass: float = 0.45, gravity: float = STANDARD_GRAVITY,
                 area_factor: float = BOUNDARY_LAYER_CONSTANT) -> BoundaryLayerAirDrag:
         """From the air's viscosity [Pa s] and density [kg/m^3] and the disk's radius [m],
         mass [kg] and ``g`` [m/s^2]: ``c = C sqrt(mu rho) a^(9/4) / (m g^(1/4))``."""
@@ -128,8 +129,8 @@ class BoundaryLayerAirDrag:
         return cls(C * math.sqrt(mu_air * rho_air) * a**2.25 / (m * g**0.25))
 
     @staticmethod
-    def crossover_tilt(mu_air: float, rho_air: float, radius: float, gravity: float = 9.81,
-                       w: float = 4.0) -> float:
+    def crossover_tilt(mu_air: float, rho_air: float, radius: float,
+                       gravity: float = STANDARD_GRAVITY, w: float = 4.0) -> float:
         """Tilt [rad] at which ``delta = sqrt(nu/Omega)`` equals the gap ``a alpha`` on the
         rolling family ``Omega^2 alpha = w g/a`` (``w = 4``, thin disk):
         ``alpha_c = nu^(2/3) / (a (w g)^(1/3))``.  Film law below, boundary layer above."""
@@ -201,7 +202,7 @@ class LoadRollingResistance:
 
     @classmethod
     def from_si(cls, c_si: float, n: float = 1.0, radius: float = 0.0375, mass: float = 0.45,
-                gravity: float = 9.81) -> LoadRollingResistance:
+                gravity: float = STANDARD_GRAVITY) -> LoadRollingResistance:
         """From the SI law ``M = c_si F^n`` (``M`` [N m], ``F`` [N], ``c_si`` [N^(1-n) m]):
         ``c = c_si (m g)^(n - 1) / a``."""
         c_si = check_real("c_si", c_si, low=0.0)
