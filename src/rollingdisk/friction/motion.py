@@ -759,7 +759,9 @@ class _Motion:
         t_stop = min(self.t1, t + self.chunk)
         tr = simulate_coulomb(self.disk, self.ground, (t, t_stop), y, rtol=self.rtol,
                               atol=self.atol, slip_tol=1e-9, alpha_min=self.alpha_flat,
-                              max_steps=self.max_steps)
+                              max_steps=self.max_steps,  # the run's wall budget, what is left
+                              max_wall_time=max(1e-3, self.max_wall
+                                                - (time.perf_counter() - self.wall0)))
         self.segments.append(tr)
         self._enter(t, MODE_NAMES[int(tr.mode[0])])  # pivot-stuck sub-modes included
         for tx in tr.transitions:
