@@ -67,7 +67,7 @@ def air_coefficient_derived(mu_air: float, radius: float, mass: float,
     Examples
     --------
     >>> round(air_coefficient_derived(1.8e-5, 0.038, 0.4) * 1e7, 4)
-    1.3635
+    1.3637
     """
     mu_air = _positive("mu_air", mu_air, low_open=False)
     a = _positive("radius", radius)
