@@ -29,6 +29,7 @@ def fresh(monkeypatch):
     monkeypatch.setattr(_jit, "clock", lambda: next(ticks) * TICK)
     monkeypatch.setattr(_jit, "_core", None)
     monkeypatch.setattr(_jit, "_py_seconds", 0.0)
+    monkeypatch.setattr(_jit, "LOAD_WORTH", math.inf)  # the projection rule: its own test
     log = types.SimpleNamespace(loads=[], compiled_chunks=0)
 
     def integrate(*args):
@@ -86,6 +87,33 @@ def test_a_cold_cache_starts_one_compiler_and_the_runs_go_on(fresh, monkeypatch)
         tr = rd.simulate(rd.Disk(h=0.2), "rough", (0, 2), Y0, method="dop853")
         assert tr.status == "completed"
     assert started and not fresh.loads and _jit.py_seconds() == pytest.approx(4 * TICK)
+
+
+def test_a_warm_cache_is_loaded_by_the_first_run_projected_past_load_worth(fresh,
+                                                                          monkeypatch):
+    """With a ready cache a run loads at the first chunk boundary at which the rest of it is
+    projected to need more than LOAD_WORTH uncompiled, however little the process spent."""
+    monkeypatch.setattr(_jit, "PY_BUDGET", math.inf)  # the total rule never fires here
+    monkeypatch.setattr(_jit, "LOAD_WORTH", 5 * TICK)
+    monkeypatch.setattr(_jit, "ready", lambda: True)
+    short = rd.simulate(rd.Disk(h=0.2), "rough", (0, 2), Y0, method="dop853")
+    assert short.status == "completed" and not fresh.loads  # done in its first chunk
+    before = _jit.py_seconds()
+    tr = rd.simulate(rd.Disk(h=0.2), "rough", (0, 200), Y0, method="dop853")
+    assert tr.status == "completed"
+    # one uncompiled chunk (1/100 of the span or less: projected >= 5 TICK more), then loaded
+    assert fresh.loads == [pytest.approx(before + TICK)]
+    assert _jit.py_seconds() - before == pytest.approx(TICK)
+    assert fresh.compiled_chunks >= 1
+    n = fresh.compiled_chunks
+    rd.simulate(rd.Disk(h=0.2), "rough", (0, 2), Y0, method="dop853")  # compiled from start
+    assert fresh.compiled_chunks == n + 1 and len(fresh.loads) == 1
+
+
+def test_worth_loading_projects_from_the_part_done():
+    assert _jit.worth_loading(0.02, 0.1)  # 0.18 s more
+    assert not _jit.worth_loading(0.02, 0.5)  # 0.02 s more
+    assert not _jit.worth_loading(0.0, 0.0) and not _jit.worth_loading(0.5, 1.0)
 
 
 # ---------------------------------------------------------------------------- auto

@@ -140,12 +140,12 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
     tc, yc = t0, y
     chunk = {"compiled": 2000, "uncompiled": 50, "taylor": 2000 if progress is None else 10}
     state = {}
+    spent_here = 0.0  # uncompiled seconds of this run (pick_core projects from them)
     later = False
     segments = []
     kinds = []
     while True:
-        core, compiled = _jit.pick_core(state, time.perf_counter() - start,
-                                        (tc - t0) / (t1 - t0))
+        core, compiled = _jit.pick_core(state, spent_here, (tc - t0) / (t1 - t0))
         kind = ("taylor" if compiled and taylor_tol is not None
                 else "compiled" if compiled else "uncompiled")
         if not kinds or kinds[-1] != kind:
@@ -169,6 +169,7 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
         w = _jit.clock() - w
         if not compiled:
             _jit.spend(w)
+            spent_here += w
         if ns > 0:  # aim at _CHUNK_SECONDS per chunk
             chunk[kind] = int(min(max(chunk[kind] * _CHUNK_SECONDS / max(w, 1e-6), 10),
                                   1_000_000))

@@ -13,9 +13,12 @@ rule (the one place it is written; docs/simulation.md quotes it):
 * Once the count reaches :data:`PY_BUDGET` in total (not per run) and the on-disk cache is
   ready, the process loads the compiled code (0.5 s) at the next chunk boundary of the
   run under way (the very same steps: the run pauses and resumes) and every later run is
-  compiled from its first step.  A loop of medium runs (0.3 s each uncompiled) is thus
-  compiled from the second run on, where before each run started uncompiled again and,
-  never reaching the budget on its own, stayed uncompiled.
+  compiled from its first step.  With a ready cache a run loads it sooner, at the first
+  chunk boundary at which it is projected (from the part of its span done) to need more
+  than :data:`LOAD_WORTH` (0.1 s) more uncompiled (:func:`worth_loading`).  A loop of
+  medium runs (0.15-0.4 s each uncompiled) is thus compiled from its first run's second
+  chunk on, where before each run started uncompiled again and, never reaching a budget
+  of its own, stayed uncompiled; a lone medium run pays at most one load more.
 * If the cache is cold when the count reaches the budget, :func:`start_background_compile`
   starts (once per process) a detached process that compiles and fills the on-disk cache,
   then marks it ready; runs go on uncompiled and switch once the mark appears.  A run
@@ -35,8 +38,9 @@ no compiled code, the Taylor part starts as uncompiled DOP853 (the Taylor method
 only compiled) and goes on with the Taylor method from the chunk at which the compiled
 code is loaded.
 
-The mark is a file named after the sources (path, size and modification time of
-``_dop853.py``, ``equations.py``, ``_numba_core.py`` and numba's own ``__init__.py``) and
+The mark is a file named after the sources (path, size and modification time of the
+compiled modules -- ``integrate/dop853.py``, ``taylor.py``, ``numba_core.py``, ...,
+``model/equations.py``, ``model/geometry.py`` -- and of numba's own ``__init__.py``) and
 the Python version, in the folder of numba's cache (``NUMBA_CACHE_DIR`` or the package's
 ``__pycache__``, else a user cache folder).  Two processes may start a compiler at once:
 the compiler takes an exclusive lock (``fcntl.flock``) and a second one leaves at once;
@@ -60,6 +64,13 @@ import numpy as np
 #: the compiled code is loaded (about what loading it costs, so a process never pays more
 #: than about twice the better of the two paths).
 PY_BUDGET = 0.4
+
+#: Seconds of uncompiled integration still ahead of a run (projected from its first chunks)
+#: beyond which, with a warm cache, the run loads the compiled code at once instead of
+#: waiting for :data:`PY_BUDGET`: a quarter of a load (0.4-0.5 s), so that a loop of medium
+#: runs (0.15-0.4 s each uncompiled) is compiled from its first run's second chunk, and a
+#: lone such run pays at most one load more than it would uncompiled.
+LOAD_WORTH = 0.1
 
 #: Where ``method="auto"`` uses the Taylor method, per ground: ``(lowest, highest, factor)``
 #: -- for tolerances ``min(rtol, atol)`` in ``[lowest, highest]`` it runs the Taylor method
@@ -108,7 +119,10 @@ def _folder() -> Path:
 def _key() -> str:
     parts = [sys.version]
     spec = importlib.util.find_spec("numba")
-    files = [_PKG / "_dop853.py", _PKG / "equations.py", _PKG / "_numba_core.py"]
+    model = _PKG.parent / "model"
+    files = [_PKG / "dop853.py", _PKG / "dop853_coefficients.py", _PKG / "taylor.py",
+             _PKG / "roots.py", _PKG / "events.py", _PKG / "numba_core.py",
+             model / "equations.py", model / "geometry.py"]
     if spec is not None and spec.origin:
         files.append(Path(spec.origin))
     for f in files:
@@ -185,9 +199,13 @@ def budget_spent() -> bool:
 def pick_core(state: dict, elapsed: float, fraction: float):
     """The integrator for the next chunk of a run, by the rule of this module's docstring:
     ``(module, compiled)``.  ``state``: a dict kept by the run (what it has started or
-    waited for); ``elapsed``: seconds the run has spent so far; ``fraction``: the part of
-    its span done (for :func:`worth_waiting`)."""
+    waited for); ``elapsed``: seconds the run has spent integrating uncompiled so far;
+    ``fraction``: the part of its span done (for :func:`worth_loading` and
+    :func:`worth_waiting`)."""
     if _core is not None:
+        return _core, True
+    if worth_loading(elapsed, fraction) and ready():
+        jit_compile()  # loads from the on-disk cache
         return _core, True
     if budget_spent():
         cold = not ready()
@@ -203,6 +221,15 @@ def pick_core(state: dict, elapsed: float, fraction: float):
     from rollingdisk.integrate import pycore
 
     return pycore, False
+
+
+def worth_loading(elapsed: float, fraction: float) -> bool:
+    """Whether a run that has spent ``elapsed`` seconds uncompiled on ``fraction`` of its
+    span is projected to need more than :data:`LOAD_WORTH` seconds more uncompiled: with a
+    warm cache it then loads the compiled code at once (rule 2 of the module docstring)."""
+    if not 0.0 < fraction < 1.0 or not elapsed > 0.0:
+        return False
+    return elapsed * (1.0 - fraction) / fraction > LOAD_WORTH
 
 
 def auto_method(ground: str, rtol: float, atol: float, *, events: bool, dense_output: bool,
