@@ -28,14 +28,15 @@ def run_json(capsys, *argv):
 
 
 def test_json_from_an_arbitrary_state(capsys):
-    rec = run_json(capsys, "--h", "0.1", "--state", STATE, "--t-end", "20")
+    rec = run_json(capsys, "--h", "0.1", "--state", STATE, "--t-end", "20", "--method",
+                   "dop853")
     for key in ("status", "message", "t_end", "n_steps", "energy_drift", "theta_min",
                 "theta_max", "theta_frequency", "varpi", "wall_time_s"):
         assert key in rec
     assert rec["status"] == "completed" and rec["t_end"] == 20.0
     assert rec["varpi"] is None  # no steady motion to predict from
     tr = simulate(Disk(h=0.1), "rough", (0, 20), [0, 0, 0, 0.3, 0, 0, 2.0, 0.5],
-                  method="dop853")  # the CLI's default
+                  method="dop853")
     assert rec["n_steps"] == tr.n_steps
     assert rec["energy_drift"] == pytest.approx(energy_drift(tr), rel=1e-6, abs=1e-15)
     assert rec["theta_min"] == pytest.approx(tr.theta.min())
@@ -61,7 +62,7 @@ def test_guard_event_is_reported(capsys):
 def test_csv_output(tmp_path, capsys):
     out = tmp_path / "traj.csv"
     assert main(["simulate", "--h", "0.1", "--state", STATE, "--t-end", "5", "--out",
-                 str(out)]) == 0
+                 str(out), "--method", "dop853"]) == 0
     text = capsys.readouterr().out
     assert "completed" in text and str(out) in text
     with open(out, newline="") as fh:
@@ -70,7 +71,7 @@ def test_csv_output(tmp_path, capsys):
     data = np.array(rows[1:], dtype=float)
     # without --json the run reports progress; it takes the steps of a plain run all the same
     tr = simulate(Disk(h=0.1), "rough", (0, 5), [0, 0, 0, 0.3, 0, 0, 2.0, 0.5],
-                  method="dop853")  # the CLI's default
+                  method="dop853")
     assert data.shape == (tr.t.size, len(COLUMNS))
     np.testing.assert_allclose(data[:, COLUMNS.index("F_z")], tr.F_z, rtol=1e-8, atol=1e-10)
     np.testing.assert_allclose(data[:, -1], tr.E, rtol=1e-12)
@@ -208,12 +209,14 @@ def test_simulate_json_is_strict_and_a_step_budget_is_a_status(capsys):
 def test_simulate_out_streams_the_same_csv_as_the_trajectory(tmp_path, capsys):
     path = tmp_path / "a.csv"
     assert main(["simulate", "--h", "0.1", "--theta0", "0.3", "--Omega0", "3", "--t-end", "5",
-                 "--out", str(path), "--json"]) == 0
+                 "--out", str(path), "--json", "--method", "dop853"]) == 0
     rows = np.loadtxt(path, delimiter=",", skiprows=1)
-    from rollingdisk import simulate_steady, steady_motion
+    from rollingdisk import simulate_steady, stability, steady_motion
 
-    tr = simulate_steady(steady_motion(Disk(h=0.1), "rough", 0.3, Omega0=3.0), 5.0,
-                         method="dop853")  # the CLI's default
+    m = steady_motion(Disk(h=0.1), "rough", 0.3, Omega0=3.0)
+    # a steady start: the CLI steps at most 1/20 of 1/|varpi| (for the measured frequency)
+    tr = simulate_steady(m, 5.0, method="dop853",
+                         max_step=0.05 / math.sqrt(abs(stability(m).varpi2)))
     assert np.array_equal(rows[:, 0], tr.t)
     assert oct(path.stat().st_mode & 0o777) == oct(0o666 & ~_umask())
 

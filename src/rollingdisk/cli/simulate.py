@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import contextlib
 import json
+import math
 
 from rollingdisk.cli._args import (
     SIMULATE_T_END_MAX,
@@ -203,6 +204,13 @@ def _run_ideal(args, disk, motion) -> dict:
                    error_control=args.error_control)
     if motion is None:
         y0, _ = initial_state(args, args.ground, "simulate")
+    else:
+        # the measured frequency or growth rate wants ~20 points per 1/|varpi|
+        # (rollingdisk.integrate.measure), whichever method runs: the Taylor method that
+        # "auto" runs once compiled code is loaded takes steps several times longer
+        varpi2 = rd.stability(motion).varpi2
+        if math.isfinite(varpi2) and varpi2 != 0.0:
+            options["max_step"] = 0.05 / math.sqrt(abs(varpi2))
     bar = progress_bar(args)
     csv_cm = (atomic_file(args.out, "w", newline="") if args.out is not None
               else contextlib.nullcontext())
