@@ -595,7 +595,7 @@ class _Hybrid:
             with np.errstate(all="ignore"):
                 (status, m, n, n_rhs, t, y, dt_next, t_new, dt, y_new, F) = advance(
                     p, self.h, self.t, self.z, self.t1, dt_try, o["rtol"], atolv,
-                    float(o["max_step"]), o["max_steps"] - self.n_steps, active, ts, zs)
+                    float(o["max_step"]), min(o["max_steps"] - self.n_steps, CHUNK), active, ts, zs)
             self.n_steps += n
             run.n_rhs += n_rhs
             add = self.points.add
