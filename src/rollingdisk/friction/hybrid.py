@@ -21,9 +21,13 @@ The disk is in one of two modes (:mod:`rollingdisk.friction.coulomb`):
 Terminal guards as on the ideal grounds: lift-off (``F_z = 0``, eq. 11), edge contact
 (``theta = 0`` with ``h > 0``), fell flat (``|theta| = pi/2``).
 
-Integration: scipy's ``DOP853`` stepped one step at a time; after each step every event
-function is evaluated on the step's dense output (at 9 points) and a sign change is located
-by ``brentq`` on ``sol(t)``, never only at step ends.  The energy dissipated by each term is
+Integration: DOP853 stepped one step at a time; after each step every event function is
+evaluated on the step's dense output (at 9 points) and a sign change is located by
+``brentq`` on ``sol(t)``, never only at step ends.  Two paths take the same steps (scipy's
+step-size control): scipy's ``DOP853`` driven from Python (0.1-1 ms a step), and the
+compiled loop of :mod:`rollingdisk.friction.fastsegment` (numba), which takes the steps
+without events and hands the driver only a step where an event function changes sign
+(``method``, :data:`PY_BUDGET`).  The energy dissipated by each term is
 integrated as four extra quadrature states, so ``E + dissipated = const`` (eq. 12) can be
 checked along a run.  A step budget (status ``"step-budget"``), a wall-clock budget
 (``"time-budget"``), a transition budget and a minimal step size (``"failed"``) bound the
@@ -42,6 +46,7 @@ from functools import cached_property
 import numpy as np
 
 from rollingdisk.friction import coulomb as _cl
+from rollingdisk.friction import fastsegment as _fs
 from rollingdisk.friction.coulomb import MODE_NAMES, _check_coulomb, coulomb_contact
 from rollingdisk.friction.ground import Coulomb
 from rollingdisk.integrate.simulation import _check_state
@@ -253,6 +258,19 @@ DEFAULT_MAX_WALL_TIME = 60.0
 #: Stored points beyond which every other regular step is dropped (memory: about 250 bytes
 #: a point); above the default step budget, so a run within it keeps every step.
 DEFAULT_MAX_POINTS = 500_000
+#: ``method="auto"``: seconds of scipy-path stepping, over all Coulomb runs of the process,
+#: after which the compiled loop (:mod:`rollingdisk.friction.fastsegment`) is loaded (0.4 s
+#: from numba's on-disk cache, about 7 s to compile it the first time on a machine) and
+#: every later step is compiled (the run under way switches at its next check, with the
+#: step size it would have tried next).  A short script never imports numba.
+PY_BUDGET = 0.5
+#: ``method="auto"`` compiles on a cold cache only when the run has at least this many
+#: seconds of its wall-clock budget left (so ``max_wall_time`` still bounds it).
+COMPILE_ROOM = 30.0
+#: Steps the compiled loop takes between returns to Python (wall budget, progress, signals).
+CHUNK = 1024
+_py_seconds = 0.0
+METHODS = ("auto", "compiled", "scipy")
 
 
 def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *,
@@ -261,7 +279,8 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
                      max_wall_time: float = DEFAULT_MAX_WALL_TIME,
                      max_points: int = DEFAULT_MAX_POINTS,
                      slip_tol: float = 1e-12, alpha_min: float = 1e-8, guards: bool = True,
-                     progress: Callable[[float], None] | None = None) -> Trajectory:
+                     progress: Callable[[float], None] | None = None,
+                     method: str = "auto") -> Trajectory:
     """Integrate the disk on Coulomb ground: rolling and sliding with located transitions.
 
     Parameters
@@ -305,12 +324,21 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         Stop at lift-off, edge contact and falling flat (default).
     progress : callable, optional
         ``progress(fraction)``, called at most about 100 times.
+    method : {"auto", "compiled", "scipy"}
+        ``"scipy"``: scipy's DOP853 driven from Python.  ``"compiled"``: the steps without
+        events in the compiled loop of :mod:`rollingdisk.friction.fastsegment` (numba;
+        20-50 times as fast; compiled once per machine, about 7 s, then loaded from
+        numba's cache in 0.4 s).  ``"auto"`` (default): scipy until the process has spent
+        :data:`PY_BUDGET` seconds on scipy-path Coulomb steps, then compiled (at once if
+        the compiled loop is loaded already) where numba is installed.  Both take scipy's
+        steps and locate events the same way: transitions agree to about 1e-10.
 
     Returns
     -------
     Trajectory
         With ``ground`` the :class:`Coulomb` value, ``mode`` per stored point,
-        ``transitions`` and ``dissipated`` (see :class:`Trajectory`); ``method="dop853-scipy"``.
+        ``transitions`` and ``dissipated`` (see :class:`Trajectory`); ``method`` is
+        ``"dop853"`` if the compiled loop took steps, else ``"dop853-scipy"``.
 
     Examples
     --------
@@ -322,7 +350,11 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         disk, ground, t_span, y0, rtol=rtol, atol=atol, max_step=max_step,
         max_steps=max_steps, max_transitions=max_transitions, max_wall_time=max_wall_time,
         max_points=max_points, slip_tol=slip_tol, alpha_min=alpha_min)
-    hybrid = _Hybrid(disk, ground, t0, t1, y, options, guards, progress)
+    if method not in METHODS:
+        raise ParameterError(f"method must be one of {METHODS}, got {method!r}")
+    if method == "compiled" and not _fs.available():
+        raise ParameterError("method='compiled' needs numba (pip install numba)")
+    hybrid = _Hybrid(disk, ground, t0, t1, y, options, guards, progress, method)
     hybrid.integrate()
     return hybrid.trajectory()
 
@@ -403,8 +435,11 @@ class _Hybrid:
     time, state and mode, the stored points, the transitions, the budgets spent, and how it
     ended (``status``, ``message``)."""
 
-    def __init__(self, disk, ground, t0, t1, y, options, guards, progress):
+    def __init__(self, disk, ground, t0, t1, y, options, guards, progress, method="scipy"):
         self.disk, self.ground, self.h = disk, ground, disk.h
+        self.method = method
+        self.compiled = method == "compiled" or (method == "auto" and _fs.loaded())
+        self.used_compiled = False
         self.t0, self.t1 = t0, t1
         self.o = options
         self.guards, self.progress = guards, progress
@@ -484,21 +519,117 @@ class _Hybrid:
         segment (a mode change or a new slip reference), False if it ended."""
         run, o = self.run, self.o
         run.side = 1.0 if self.z[5] >= 0 else -1.0
+        if self.compiled:
+            return self._segment_compiled(0.0)
         solver = _DOP853()(run.rhs(self.mode), self.t, self.z, self.t1, rtol=o["rtol"],
                            atol=o["atol"], max_step=o["max_step"])
         g_old = run.events(self.mode, self.z)
-        while solver.status == "running":
-            if self._out_of_budget(solver.t) or not self._step(solver):
+        clock = time.perf_counter()
+        n_here = 0
+        try:
+            while solver.status == "running":
+                if self._out_of_budget(solver.t) or not self._step(solver):
+                    return False
+                sol = self._dense(solver)
+                if sol is None:
+                    return False
+                hit = _first_event(run, self.mode, sol, solver.t_old, solver.t, g_old,
+                                   self.h > 0 and self.guards, self.guards)
+                if hit is not None:
+                    return self._on_event(sol, *hit)
+                g_old = self._accept(solver)
+                n_here += 1
+                if self.method == "auto" and n_here % 64 == 0:
+                    now = time.perf_counter()
+                    _spend(now - clock)
+                    clock = now
+                    if self._switch():
+                        return self._segment_compiled(solver.h_abs)
+            return False
+        finally:
+            _spend(time.perf_counter() - clock)
+
+    def _switch(self):
+        """``method="auto"``: whether to go on compiled now (the process has spent
+        :data:`PY_BUDGET` s on the scipy path, numba is there, and a cold cache leaves
+        :data:`COMPILE_ROOM` s of the wall budget); loads the compiled loop."""
+        global _compile_failed
+        if self.compiled:
+            return True
+        if _compile_failed or _py_seconds < PY_BUDGET or not _fs.available():
+            return False
+        if not _fs.loaded() and not _fs.cache_ready():
+            left = self.o["max_wall_time"] - (time.perf_counter() - self.wall0)
+            if left < COMPILE_ROOM:
                 return False
-            sol = self._dense(solver)
-            if sol is None:
+        try:
+            _fs.compiled()
+        except Exception:  # noqa: BLE001 - numba broken: stay on the scipy path
+            _compile_failed = True
+            return False
+        self.compiled = True
+        return True
+
+    def _segment_compiled(self, dt_try):
+        """:meth:`_segment` with the steps taken by the compiled loop
+        (:func:`rollingdisk.friction.fastsegment.advance`), ``CHUNK`` steps a call; only a
+        step in which an event function changes sign comes back here, to be located by
+        :func:`_first_event` and handled by :meth:`_on_event`.  ``dt_try``: the step size
+        to try first (``0``: scipy's initial step, a new segment)."""
+        ns = _fs.compiled()
+        self.used_compiled = True
+        run, o, mode, g = self.run, self.o, self.mode, self.ground
+        c_roll, c_pivot, c_air = run.coeffs
+        p = np.array([mode, g.mu_k, g.mu_s, c_roll, c_pivot, c_air, run.ref[0], run.ref[1],
+                      U_EPS, run.sz, run.side, run.alpha_min], dtype=float)
+        atolv = np.full(self.z.shape[0], float(o["atol"]))
+        edge = self.h > 0 and self.guards
+        active = np.array([True, c_pivot > 0.0, self.guards, edge, self.guards],
+                          dtype=np.bool_)
+        ts = np.empty(CHUNK)
+        zs = np.empty((CHUNK, self.z.shape[0]))
+        advance = ns["advance"]
+        while True:
+            if self._out_of_budget(self.t):
                 return False
-            hit = _first_event(run, self.mode, sol, solver.t_old, solver.t, g_old,
-                               self.h > 0 and self.guards, self.guards)
-            if hit is not None:
-                return self._on_event(sol, *hit)
-            g_old = self._accept(solver)
-        return False
+            with np.errstate(all="ignore"):
+                (status, m, n, n_rhs, t, y, dt_next, t_new, dt, y_new, F) = advance(
+                    p, self.h, self.t, self.z, self.t1, dt_try, o["rtol"], atolv,
+                    float(o["max_step"]), min(o["max_steps"] - self.n_steps, CHUNK), active, ts, zs)
+            self.n_steps += n
+            run.n_rhs += n_rhs
+            add = self.points.add
+            for i in range(m):
+                add(float(ts[i]), zs[i], mode)
+            run.ref = (float(p[6]), float(p[7]))
+            self.t, self.z = float(t), y.copy()
+            self._report()
+            if status == _fs.COMPLETED:
+                return False
+            if status == _fs.FAILED:
+                self.status = "failed"
+                self.message = (f"the integrator gave up at t = {self.t:.12g} (Required step "
+                                "size is less than spacing between numbers.): step sizes "
+                                "collapsed")
+                return False
+            if status == _fs.SINGULAR:
+                self.status = "failed"
+                self.message = (f"the equations became singular at t = {self.t:.12g} (a "
+                                f"non-finite right-hand side, theta = {self.z[5]:.6g} at "
+                                "the step start)")
+                return False
+            if status == _fs.EVENT:
+                sol = _DenseStep(ns["_dense_value"], self.t, float(t_new), self.z, F.copy())
+                g_old = run.events(mode, self.z)
+                hit = _first_event(run, mode, sol, self.t, float(t_new), g_old, edge,
+                                   self.guards)
+                if hit is not None:
+                    return self._on_event(sol, *hit)
+                # the compiled events saw a sign change the Python ones do not (round-off
+                # at a zero): the step is a regular one
+                self._accept_point(float(t_new), np.array(y_new))
+                p[6], p[7] = run.ref
+            dt_try = dt_next
 
     def _out_of_budget(self, t):
         """Stop (status and message set) if the step or wall-clock budget is spent."""
@@ -555,8 +686,13 @@ class _Hybrid:
 
     def _accept(self, solver):
         """Store a step without events; the event values at its end."""
+        return self._accept_point(solver.t, solver.y.copy())
+
+    def _accept_point(self, t, z):
+        """Store the regular step ending at ``(t, z)``; in sliding the slip reference
+        becomes ``U/|U|`` there; the event values at ``z``."""
         run, mode = self.run, self.mode
-        self.t, self.z = solver.t, solver.y.copy()
+        self.t, self.z = t, z
         self.points.add(self.t, self.z, mode)
         g_old = run.events(mode, self.z)
         if mode & 1 == SLIDING:
@@ -565,11 +701,15 @@ class _Hybrid:
             if n > U_EPS:
                 run.ref = (U[0] / n, U[1] / n)
                 g_old = run.events(mode, self.z)
+        self._report()
+        return g_old
+
+    def _report(self):
+        """Call ``progress`` about every percent of the span."""
         done = (self.t - self.t0) / (self.t1 - self.t0)
         if self.progress is not None and done >= self.next_report:
             self.progress(min(1.0, done))
             self.next_report = done + 0.01
-        return g_old
 
     def _on_event(self, sol, k, te):
         """Handle event ``k`` at ``te``: a terminal guard ends the run; the end of a mode
@@ -657,10 +797,33 @@ class _Hybrid:
         return CoulombTrajectory(
             disk=self.disk, ground=self.ground, t=np.array(self.points.t), y=Z[:10],
             status=self.status, message=self.message, n_steps=self.n_steps,
-            n_rhs=self.run.n_rhs, method="dop853-scipy", t_event=self.t_event,
+            n_rhs=self.run.n_rhs, method="dop853" if self.used_compiled else "dop853-scipy",
+            t_event=self.t_event,
             wall_time=wall, mode=np.array(self.points.mode),
             transitions=tuple(self.transitions),
             dissipated={k: Z[10 + i].copy() for i, k in enumerate(DISSIPATION_TERMS)})
+
+
+_compile_failed = False
+
+
+def _spend(seconds):
+    """Count ``seconds`` of scipy-path stepping against :data:`PY_BUDGET`."""
+    global _py_seconds
+    _py_seconds += max(0.0, seconds)
+
+
+class _DenseStep:
+    """The DOP853 interpolant of one step of the compiled loop, ``sol(t)`` as scipy's
+    dense output (:func:`rollingdisk.integrate.dop853._dense_value`)."""
+
+    def __init__(self, value, t_old, t, y_old, F):
+        self.value, self.t_old, self.dt, self.y_old, self.F = value, t_old, t - t_old, y_old, F
+
+    def __call__(self, t):
+        out = np.empty(self.y_old.shape[0])
+        self.value(self.y_old, self.F, (t - self.t_old) / self.dt, out)
+        return out
 
 
 def _start_sliding(run, disk, ground, z, stuck=0):

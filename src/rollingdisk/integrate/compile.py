@@ -1,0 +1,81 @@
+"""Compile a namespace of plain-Python numeric functions with numba (the one service the
+layers above ``integrate`` use to get compiled code; only ``integrate`` imports numba).
+
+The trick of :mod:`rollingdisk.integrate.numba_core`, made generic: every named function's
+code object is re-bound to the namespace ``ns`` (so that the functions it calls by global
+name are the compiled versions found there), then handed to ``numba.njit(cache=True)``; the
+compiled dispatcher replaces the function in ``ns``.  Building blocks of
+:mod:`rollingdisk.integrate.dop853` (``_step``, ``_combine``, ``_dense_coefficients``, ...)
+can thus be compiled around a right-hand side ``_rhs(p, h, y, out)`` of another layer (a
+Coulomb mode, :mod:`rollingdisk.friction.fastsegment`): numba is duck-typed, so the
+argument that DOP853 calls ``rough`` may be any value the caller's ``_rhs`` understands.
+
+numba's on-disk cache is keyed by each function's source file, qualified name and argument
+types; a function compiled in two namespaces with the same argument types would share one
+cache entry, so a caller must give its own right-hand side a different argument type (a
+parameter array instead of ``rough: bool``) or its own names.  The cache does not notice an
+edit of a called function in another file: a caller checks the compiled result against its
+Python kernels (and calls :func:`recompile`) as :func:`rollingdisk.integrate.jit.jit_compile`
+does.
+"""
+
+from __future__ import annotations
+
+import types
+from collections.abc import Iterable, Sequence
+
+__all__ = ["compile_namespace", "recompile", "numba_available"]
+
+
+def numba_available() -> bool:
+    """Whether numba can be imported (without importing it)."""
+    import importlib.util
+
+    return importlib.util.find_spec("numba") is not None
+
+
+def compile_namespace(ns: dict, names: Sequence[str], *, cache: bool = True) -> dict:
+    """Compile the functions ``names`` of the namespace ``ns`` in place, in that order.
+
+    Parameters
+    ----------
+    ns : dict
+        Global namespace of the functions: every global name they use (helpers, constants,
+        ``np``) must resolve there.  Modified in place: each name becomes its compiled
+        dispatcher (lazily compiled on first call, from the on-disk cache when it is there).
+    names : sequence of str
+        The functions to compile; functions called by them must be compiled too (listed)
+        or be numba-compilable globals already.
+    cache : bool
+        ``numba.njit(cache=True)`` (default).
+
+    Returns
+    -------
+    dict
+        ``ns`` itself.
+
+    Raises
+    ------
+    ImportError
+        If numba is missing.
+    KeyError
+        If a name is not in ``ns``.
+    """
+    import numba
+
+    for name in names:
+        f = ns[name]
+        g = types.FunctionType(f.__code__, ns, f.__name__, f.__defaults__, f.__closure__)
+        g.__qualname__ = f.__qualname__
+        g.__module__ = f.__module__
+        ns[name] = numba.njit(cache=cache)(g)
+    return ns
+
+
+def recompile(ns: dict, names: Iterable[str]) -> None:
+    """Recompile the compiled functions ``names`` of ``ns`` from their current sources
+    (refreshing a stale on-disk cache)."""
+    for name in names:
+        d = ns[name]
+        if getattr(d, "signatures", None):
+            d.recompile()

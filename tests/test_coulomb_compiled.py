@@ -1,0 +1,180 @@
+"""The compiled contact phase of simulate_coulomb (rollingdisk.friction.fastsegment) against
+the scipy path and against independent truth (closed form, rough-ground integration,
+energy balance eq. 12)."""
+
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+import rollingdisk as rd
+from rollingdisk.friction import fastsegment as fs
+from rollingdisk.friction import hybrid as hy
+
+pytestmark = pytest.mark.skipif(not fs.available(), reason="needs numba")
+
+
+@pytest.fixture(scope="module")
+def ns():
+    return fs.compiled()
+
+
+def _both(disk, ground, span, y0, **kw):
+    a = rd.simulate_coulomb(disk, ground, span, y0, method="scipy", **kw)
+    b = rd.simulate_coulomb(disk, ground, span, y0, method="compiled", **kw)
+    assert a.method == "dop853-scipy" and b.method == "dop853"
+    assert a.status == b.status
+    assert [(x.from_mode, x.to_mode) for x in a.transitions] == [
+        (x.from_mode, x.to_mode) for x in b.transitions]
+    for x, z in zip(a.transitions, b.transitions):
+        assert abs(x.t - z.t) <= 1e-8
+    assert a.t[-1] == pytest.approx(b.t[-1], abs=1e-8)
+    assert np.abs(a.y[:, -1] - b.y[:, -1]).max() <= 1e-7
+    for k in hy.DISSIPATION_TERMS:
+        assert abs(a.dissipated[k][-1] - b.dissipated[k][-1]) <= 1e-7
+    assert rd.energy_balance(b) <= 1e-9
+    return a, b
+
+
+def test_sliding_disk_rolls_at_the_closed_form_time(ns):
+    """h = 0, upright, V = 1, omega = 0, mu = 0.2 (the docstring example of
+    simulate_coulomb): dV/dt = -mu, d omega2/dt = mu / k2^2 = 2 mu (eq. 9), so the slip
+    u = V - omega2 = 1 - 3 mu t vanishes at t* = 1 / (3 mu) = 5/3, with V = omega2 = 2/3;
+    the slip has dissipated 1/2 - (1/2 + 1/4) (2/3)^2 = 1/6."""
+    y0 = [0, 0, 1, 0, 0, 0, 0, 0, 0, 0]
+    a, b = _both(rd.Disk(0.0), rd.Coulomb(0.2), (0, 2), y0)
+    (x,) = b.transitions
+    assert (x.from_mode, x.to_mode) == ("sliding", "rolling")
+    assert abs(x.t - 5.0 / 3.0) <= 1e-9
+    assert b.y[2, -1] == pytest.approx(2.0 / 3.0, abs=1e-12)
+    assert b.dissipated["slip"][-1] == pytest.approx(1.0 / 6.0, abs=1e-12)
+
+
+@pytest.mark.parametrize("h,theta0,r_C,t_end", [(0.0, 0.6, 2.0, 0.3339), (0.3, 0.9, 1.0, 0.2418)])
+def test_rolling_starts_to_slide_where_the_rough_motion_leaves_the_cone(ns, h, theta0, r_C,
+                                                                         t_end):
+    """A steady circle nudged (omega1 + 0.05) on mu = 1.02 mu_required: it slides once
+    |F_t| = mu F_z.  Up to then it is the rough-ground motion, so the time is the first
+    zero of mu F_z - |F_t| on an independent rough-ground run (simulate, dense output)."""
+    disk = rd.Disk(h)
+    m = rd.steady_motion(disk, "rough", theta0, r_C=r_C)
+    yr = np.array(m.initial_state(), dtype=float)
+    yr[5] += 0.05  # omega1 (rough layout: X, Y, psi, theta, phi, omega1, omega2, omega3)
+    y0 = rd.rolling_state(disk, yr)
+    mu = 1.02 * m.mu_required
+    a, b = _both(disk, rd.Coulomb(mu), (0, t_end), y0)
+    x = b.transitions[0]
+    assert (x.from_mode, x.to_mode) == ("rolling", "sliding")
+
+    rough = rd.simulate(disk, "rough", (0, t_end), yr, method="dop853", rtol=1e-13,
+                        atol=1e-14, dense_output=True)
+
+    def margin(t):
+        F_x, F_y, F_z = rd.contact_force(disk, "rough", rough.sol(t))
+        return mu * F_z - math.hypot(F_x, F_y)
+
+    ts = np.linspace(0.0, t_end, 400)
+    vals = [margin(t) for t in ts]
+    i = next(i for i in range(1, ts.size) if vals[i - 1] > 0.0 >= vals[i])
+    t_ref = brentq(margin, ts[i - 1], ts[i], xtol=1e-15, rtol=8.9e-16)
+    assert abs(x.t - t_ref) <= 1e-8
+
+
+def test_pivot_sticks_at_the_closed_form_time_both_paths(ns):
+    """Upright thin disk spinning about the vertical (test_pivot_stick): omega_z = Omega0 -
+    4 c t stops at Omega0 / (4 c), then the pivot sticks."""
+    Om0, c = 0.7, 0.03
+    y0 = [0, 0, 0, 0, 0, 0, 0, 0, 0, Om0]
+    a, b = _both(rd.Disk(0.0), rd.Coulomb(0.5, pivot=c), (0.0, 10.0), y0)
+    (x,) = b.transitions
+    assert (x.from_mode, x.to_mode) == ("rolling", "rolling, pivot stuck")
+    assert abs(x.t - Om0 / (4 * c)) <= 1e-9
+    assert b.dissipated["pivot"][-1] == pytest.approx(0.125 * Om0 ** 2, rel=1e-12)
+
+
+def test_spin_in_place_sticks_then_tips_onto_the_edge_both_paths(ns):
+    """Disk(0.17) spinning in place with pivot friction (test_pivot_stick): the pivot
+    sticks, then the disk lands on its other rim edge: the guard is located the same way."""
+    disk = rd.Disk(0.17)
+    s = rd.steady_motion(disk, "rough", theta0=0.165, r_C=0.0)
+    y0 = rd.rolling_state(disk, s.initial_state())
+    a, b = _both(disk, rd.Coulomb(0.5, pivot=rd.PivotFriction(0.05)), (0.0, 20.0), y0,
+                 max_steps=2000)
+    assert b.status == "edge-contact"
+    assert abs(a.t_event - b.t_event) <= 1e-8
+
+
+def test_all_dissipation_terms_balance_both_paths(ns):
+    disk = rd.Disk(0.1)
+    g = rd.Coulomb(0.4, 0.3, rolling_resistance=0.005, pivot=0.01, air=0.002)
+    m = rd.steady_motion(disk, "rough", 0.5, Omega0=3.0)
+    y = rd.rolling_state(disk, m.initial_state())
+    y[2] += 0.05
+    a, b = _both(disk, g, (0, 10), y)
+    assert b.transitions[0].from_mode == "sliding" and rd.energy_balance(b) <= 1e-9
+
+
+def _random_state(rng):
+    y = np.zeros(14)
+    y[:2] = rng.uniform(-1, 1, 2)
+    y[2:4] = rng.uniform(-0.5, 0.5, 2)
+    y[4] = rng.uniform(-3, 3)
+    y[5] = rng.choice([-1.0, 1.0]) * rng.uniform(0.1, 1.3)
+    y[6] = rng.uniform(-3, 3)
+    y[7:10] = rng.uniform(-2, 2, 3)
+    y[10:] = rng.uniform(0, 1, 4)
+    return y
+
+
+@pytest.mark.parametrize("mode", range(4))
+def test_compiled_rhs_and_events_equal_the_python_kernels(ns, mode):
+    """fastsegment's _rhs and _cc_events (compiled) against _Run.rhs and _Run.events (the
+    Python kernels of coulomb.py), at random states, in each of the 4 modes."""
+    rng = np.random.default_rng(7 + mode)
+    for _ in range(20):
+        disk = rd.Disk(float(rng.choice([0.0, 0.25])))
+        g = rd.Coulomb(0.4, 0.3, rolling_resistance=0.01, pivot=0.02, air=0.003)
+        y = _random_state(rng)
+        run = hy._Run(disk, g, alpha_min=1e-3)
+        run.ref = (0.6, -0.8)
+        run.sz = float(rng.choice([-1.0, 1.0]))
+        run.side = 1.0 if y[5] >= 0 else -1.0
+        want = run.rhs(mode)(0.0, y)
+        c_roll, c_pivot, c_air = g.coefficients
+        p = np.array([mode, g.mu_k, g.mu_s, c_roll, c_pivot, c_air, *run.ref, hy.U_EPS,
+                      run.sz, run.side, run.alpha_min])
+        got = np.empty(14)
+        ns["_rhs"](p, disk.h, y, got)
+        assert np.allclose(got, want, rtol=1e-12, atol=1e-12)
+        K = np.zeros((14, 3))
+        ns["_rhs_col"](p, disk.h, y, K, 1)
+        assert np.array_equal(K[:, 1], got)
+        ev = np.empty(5)
+        ns["_cc_events"](p, disk.h, y, ev)
+        assert np.allclose(ev, run.events(mode, y), rtol=1e-12, atol=1e-12)
+
+
+def test_uncompiled_loop_takes_the_compiled_steps(ns):
+    """fastsegment.advance run as plain Python takes the steps of its compiled version."""
+    py = fs.namespace(compiled=False)
+    assert fs.matches_python(ns)
+    disk = rd.Disk(0.0)  # Coulomb(0.2): mu_k = mu_s = 0.2 in p0
+    y0 = np.array([0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=float)
+    p0 = np.array([1, 0.2, 0.2, 0, 0, 0, 1.0, 0.0, hy.U_EPS, 1.0, 1.0, 1e-8])
+    active = np.array([True, False, True, False, True])
+    out = []
+    for space in (ns, py):
+        ts, zs = np.empty(4), np.empty((4, 14))
+        r = space["advance"](p0.copy(), disk.h, 0.0, y0, 2.0, 0.0, 1e-11, np.full(14, 1e-12),
+                             np.inf, 50, active, ts, zs)
+        out.append((r, ts, zs))
+    (r1, t1, z1), (r2, t2, z2) = out
+    assert r1[0] == r2[0] and r1[1] == r2[1] and r1[2] == r2[2]
+    m = r1[1]
+    assert np.allclose(t1[:m], t2[:m], rtol=1e-13) and np.allclose(z1[:m], z2[:m], atol=1e-13)
+
+
+def test_method_argument_is_checked():
+    with pytest.raises(rd.ParameterError, match="method"):
+        rd.simulate_coulomb(rd.Disk(0.0), rd.Coulomb(0.2), (0, 1), [0] * 10, method="fast")
