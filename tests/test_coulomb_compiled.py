@@ -178,3 +178,35 @@ def test_uncompiled_loop_takes_the_compiled_steps(ns):
 def test_method_argument_is_checked():
     with pytest.raises(rd.ParameterError, match="method"):
         rd.simulate_coulomb(rd.Disk(0.0), rd.Coulomb(0.2), (0, 1), [0] * 10, method="fast")
+
+
+def test_compiled_slip_direction_is_the_defining_root_and_the_scipy_paths(ns, monkeypatch):
+    """The direction in which a rolling disk starts to slide: sliding with friction
+    ``-mu_k F_z d``, the slip acceleration (the Python kernels, ``hy._slip_accel``) is along
+    ``+d``.  The compiled scan finds the direction the brentq scan finds, at random states
+    and every pivot state."""
+    rng = np.random.default_rng(7)
+    found = 0
+    for k in range(80):
+        y = np.zeros(10)
+        y[2:4] = rng.uniform(-1, 1, 2)
+        y[4] = rng.uniform(-3, 3)
+        y[5] = rng.uniform(-1.4, 1.4)
+        y[7:10] = rng.uniform(-4, 4, 3)
+        h, mu = rng.uniform(0, 0.5), rng.uniform(0.05, 1)
+        co = tuple(rng.uniform(0, 0.05, 3))
+        sz = (None, 1.0, -1.0, 0.0)[k % 4]
+        d = hy._slip_direction(h, mu, co, y, sz)  # compiled: the fixture loaded it
+        with monkeypatch.context() as m:
+            m.setattr(fs, "loaded", lambda: False)
+            ref = hy._slip_direction(h, mu, co, y, sz)
+        assert (d is None) == (ref is None)
+        if d is None:
+            continue
+        found += 1
+        assert np.hypot(d[0] - ref[0], d[1] - ref[1]) <= 1e-12
+        ax, ay = hy._slip_accel(h, mu, co, y, d[0], d[1], sz)
+        n = math.hypot(ax, ay)
+        assert abs(d[0] * ay - d[1] * ax) <= 1e-12 * max(n, 1.0)  # parallel
+        assert d[0] * ax + d[1] * ay > 0.0  # and along +d
+    assert found >= 40

@@ -284,6 +284,87 @@ def advance(p, h, t, y0, t_end, dt_try, rtol, atolv, max_step, max_steps, active
     return status, m, n_steps, n_rhs, t, y, dt_abs, t_new, dt, y_new, F
 
 
+# ------------------------------------------------------------------ slip direction
+def _slip_accel_c(h, mu_k, c_roll, c_pivot, c_air, y, e_x, e_y, sz, sz_free):
+    """:func:`rollingdisk.friction.hybrid._slip_accel` in compilable form (``sz_free``:
+    the pivot moment of :func:`_coulomb_moments` with ``sgn omega_z``, else the pivot
+    state ``sz``, 0 stuck): the slip acceleration ``du/dt`` (Cxyz) at ``u = 0`` sliding
+    with friction ``-mu_k F_z e``."""
+    theta, w1, w2, w3 = y[5], y[7], y[8], y[9]
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)  # noqa: F821 - namespace
+    if sz_free:
+        M0x, M0y, M0z, M1x, M1y, M1z = _coulomb_moments(  # noqa: F821
+            c_roll, c_pivot, c_air, theta, w1, w2, w3)
+        d1, d2, d3, F_x, F_y, F_z = _sliding_solve(  # noqa: F821
+            h, mu_k, e_x, e_y, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z)
+    else:
+        M0x, M0y, M0z, M1x, M1y, M1z = _pivot_moments(  # noqa: F821
+            c_roll, c_pivot, c_air, theta, w1, w2, w3, sz)
+        if sz == 0.0:
+            d1, d2, d3, F_x, F_y, F_z, _L = _sliding_stuck_solve(  # noqa: F821
+                h, mu_k, e_x, e_y, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z)
+        else:
+            d1, d2, d3, F_x, F_y, F_z = _sliding_solve(  # noqa: F821
+                h, mu_k, e_x, e_y, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z)
+    Om = w3 / c
+    v_Cx = w2 - ht * w3  # u = 0
+    v_Cy = w1 * z_P
+    dv_Cx = F_x + v_Cy * Om  # eq. (8)_1
+    dv_Cy = F_y - v_Cx * Om  # eq. (8)_2
+    return dv_Cx - d2 + ht * d3, dv_Cy - d1 * z_P - w1 * w1 * y_P
+
+
+def _slip_parts(h, mu_k, c_roll, c_pivot, c_air, y, sz, sz_free, a):
+    """``(d x du/dt, d . du/dt)`` for the slip direction ``d = (cos a, sin a)``."""
+    ex = np.cos(a)
+    ey = np.sin(a)
+    ax, ay = _slip_accel_c(h, mu_k, c_roll, c_pivot, c_air, y, ex, ey, sz, sz_free)
+    return ex * ay - ey * ax, ex * ax + ey * ay
+
+
+def slip_scan(h, mu_k, c_roll, c_pivot, c_air, y, sz, sz_free, n_grid):
+    """The angle of the slip direction of
+    :func:`rollingdisk.friction.hybrid.slip_direction`: the grid of ``n_grid`` angles on
+    ``[0, 2 pi]`` scanned for sign changes of ``d x du/dt``, each root refined to round-off
+    (bisection), and among the roots with ``d . du/dt > 0`` the one of largest slip
+    acceleration; ``nan`` if there is none."""
+    best_a = np.nan
+    best_along = 0.0
+    two_pi = 2.0 * np.pi
+    a0 = 0.0
+    f0 = _slip_parts(h, mu_k, c_roll, c_pivot, c_air, y, sz, sz_free, a0)[0]
+    for i in range(n_grid - 1):
+        a1 = two_pi * (i + 1) / (n_grid - 1)
+        f1 = _slip_parts(h, mu_k, c_roll, c_pivot, c_air, y, sz, sz_free, a1)[0]
+        root = np.nan
+        if f0 == 0.0:
+            root = a0
+        elif f0 * f1 < 0.0:
+            lo, hi, flo = a0, a1, f0
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                if not (lo < mid < hi):
+                    break
+                fm = _slip_parts(h, mu_k, c_roll, c_pivot, c_air, y, sz, sz_free, mid)[0]
+                if fm == 0.0:
+                    lo = mid
+                    hi = mid
+                    break
+                if (fm > 0.0) == (flo > 0.0):
+                    lo, flo = mid, fm
+                else:
+                    hi = mid
+            root = 0.5 * (lo + hi)
+        if root == root:
+            along = _slip_parts(h, mu_k, c_roll, c_pivot, c_air, y, sz, sz_free, root)[1]
+            if along > 0.0 and (best_a != best_a or along > best_along):
+                best_a = root
+                best_along = along
+        a0 = a1
+        f0 = f1
+    return best_a
+
+
 # ------------------------------------------------------------------ namespaces
 #: The functions of the namespace, callees before callers: the Coulomb kernels, this
 #: module's right-hand side and events, DOP853's building blocks, the loop.
@@ -294,7 +375,7 @@ _KERNELS = ("_inertia", "_geometry", "_coulomb_moments", "_coulomb_powers", "_om
 _OWN = ("_cc_solve", "_rhs", "_rhs_col", "_cc_events", "_all_finite", "_vec_finite")
 _DOP = ("_combine", "_step", "_dense_tail", "_dense_coefficients", "_dense_value",
         "_error_norm_v", "_step_factor", "_rms", "_initial_step_scaled", "initial_step_v")
-NAMES = _KERNELS + _OWN + _DOP + ("advance",)
+NAMES = _KERNELS + _OWN + _DOP + ("advance", "_slip_accel_c", "_slip_parts", "slip_scan")
 
 _compiled = None
 _compile_time = None

@@ -113,7 +113,16 @@ def slip_direction(disk: Disk, ground: Coulomb, y) -> tuple[float, float] | None
 
 
 def _slip_direction(h, mu_k, coeffs, y, sz=None):
-    """:func:`slip_direction` with the pivot state ``sz`` of :func:`_slip_accel`."""
+    """:func:`slip_direction` with the pivot state ``sz`` of :func:`_slip_accel`.  Once the
+    compiled Coulomb loop is loaded, the same scan runs compiled
+    (:func:`rollingdisk.friction.fastsegment.slip_scan`; roots by bisection to round-off
+    instead of ``brentq`` to 1e-15: the two agree to about 1e-15)."""
+    if _fs.loaded():
+        a = _fs.compiled()["slip_scan"](
+            float(h), float(mu_k), float(coeffs[0]), float(coeffs[1]), float(coeffs[2]),
+            np.ascontiguousarray(y[:10], dtype=float), 0.0 if sz is None else float(sz),
+            sz is None, 145)
+        return None if a != a else (math.cos(a), math.sin(a))
     from scipy.optimize import brentq
 
     def parts(a):

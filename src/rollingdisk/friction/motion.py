@@ -77,9 +77,10 @@ class ImpactRecord:
     ----------
     t : float
         Time [``sqrt(a/g)``].
-    kind : {"rim", "rim-change", "face"}
+    kind : {"rim", "rim-change", "face", "tread"}
         A rim point landing from flight, the other rim edge of an upright disk, the face
-        of a disk falling flat.
+        of a disk falling flat, the tread line of a disk whose rim changes accumulated
+        (the rule of :meth:`_Motion._roll_on_tread`).
     impulse : ndarray, shape (3,)
         ``(Lam_x, Lam_y, Lam_N)`` in Cxyz [``m sqrt(a g)``]; for a face impact the vertical
         momentum removed.
@@ -786,6 +787,8 @@ class _Motion:
         if tr.status == "edge-contact":
             if _kinetic(h, s) <= self.rest_energy:
                 return self._rest_on_tread(t, s)
+            if self._rim_changes_accumulate(t):
+                return self._roll_on_tread(t, s)
             s2, side2 = self._strike(t, s, -side, "rim-change")
             return self._after_impact(t, s2, side2)
         return ("end", tr.status, tr.message, t, s)
@@ -828,6 +831,57 @@ class _Motion:
         lost = _state_energy(h, s) - _state_energy(h, rest)
         self._impact_record(t, "rim-change", np.zeros(3), lost, 0.0)
         return ("end", "at-rest", f"at rest upright on the tread at t = {t:.12g}", t, rest)
+
+    def _rim_changes_accumulate(self, t):
+        """Zeno rule of the rim changes: the last ``zeno_count`` impacts were all rim changes
+        within ``zeno_window`` (the rocking has died out, or the disk rolls upright on its
+        tread and its contact jumps from edge to edge at one instant)."""
+        n = self.zeno_count
+        last = self.impacts[-n:]
+        return (len(last) == n and all(x.kind == "rim-change" for x in last)
+                and t - last[0].t <= self.zeno_window)
+
+    def _roll_on_tread(self, t, s):
+        """The disk stands on its tread line (``theta = 0``) and rolls on it to rest.
+
+        The rule, stated once (docs/motion.md): the tread line takes a plastic, sticking
+        impulse that conserves the angular momentum about itself, ``L = k2^2 omega2 +
+        v_Cx`` (m = a = 1, ``v_Cx`` the velocity of C across the line): the rocking
+        (``omega1``), the turning (``omega3``), the vertical and the sideways velocity
+        are removed and the disk rolls with ``omega2' = L / (1 + k2^2)`` (the rolling
+        state of least energy with that ``L``, so the impulse never creates energy).
+        Rolling upright under the rolling-resistance moment ``c F_z`` (``F_z = 1``),
+        ``d(3/4 omega2^2)/dt = -c |omega2|``: it stops after ``1.5 |omega2'| / c``."""
+        h = self.h
+        psi = s[3]
+        cp, sp = math.cos(psi), math.sin(psi)
+        v_x = s[6] * cp + s[7] * sp
+        w2 = (K2 * s[10] + v_x) / (1.0 + K2)
+        s1 = s.copy()
+        s1[2], s1[4] = 1.0, 0.0
+        s1[6], s1[7], s1[8] = w2 * cp, w2 * sp, 0.0
+        s1[9], s1[10], s1[11] = 0.0, w2, 0.0
+        lost = _state_energy(h, s) - _state_energy(h, s1)
+        self._impact_record(t, "tread", s1[6:9] - s[6:9], lost, 0.0)
+        self._enter(t, "rolling")
+        c = float(self.ground.coefficients[0])
+        dt = math.inf if c == 0.0 else 1.5 * abs(w2) / c
+        t_end = min(t + dt, self.t1)
+        tau = t_end - t
+        w_end = math.copysign(max(0.0, abs(w2) - c * tau / 1.5), w2) if t_end < t + dt else 0.0
+        dist = 0.5 * (w2 + w_end) * tau  # v_Cx = omega2 and d phi/dt = omega2 at theta = 0
+        s2 = s1.copy()
+        s2[0] += dist * cp
+        s2[1] += dist * sp
+        s2[5] += dist
+        s2[6], s2[7], s2[10] = w_end * cp, w_end * sp, w_end
+        self.D += 0.75 * (w2 * w2 - w_end * w_end)
+        self._check(_state_energy(h, s2))
+        where = f"rolling upright on its tread from t = {t:.12g} (rim changes accumulated)"
+        if t + dt <= self.t1:
+            return ("end", "at-rest", f"at rest upright on the tread at t = {t_end:.12g}, "
+                    f"{where}", t_end, s2)
+        return ("end", "completed", f"reached t = {t_end:.12g} {where}", t_end, s2)
 
     def _flat(self, t, s):
         h = self.h

@@ -266,6 +266,20 @@ class EnsembleResult:
         return f"EnsembleResult(h={self.h:g}, n={self.n}, {c})"
 
 
+def _load_compiled():
+    """An ensemble is a long job: load the compiled contact phase
+    (:mod:`rollingdisk.friction.fastsegment`) at once instead of after the process's
+    uncompiled budget (compiling it if numba's cache is cold: about 7 s, once per
+    machine); without numba the tosses run on the scipy path."""
+    from rollingdisk.friction import fastsegment as _fs
+
+    if _fs.available():
+        try:
+            _fs.compiled()
+        except Exception:  # noqa: BLE001 - numba broken: the scipy path still works
+            pass
+
+
 def _one(args):
     h, row, e, mu, t_end, max_wall = args
     lift, v, w1, tilt, w2, w3, vx = row
@@ -362,6 +376,8 @@ def toss_ensemble(disk: Disk, n: int, rng_seed: int, *, e: float = 0.5, mu: floa
             fh.flush()
     todo = [i for i in range(n) if i not in done]
     wall0 = time.perf_counter()
+    if todo:
+        _load_compiled()  # compiled once here, so that the workers only load it
     args = [(disk.h, tuple(rows[i]), e, mu, t_end, max_wall) for i in todo]
     try:
         if workers == 1 or len(todo) < 2:
@@ -370,7 +386,7 @@ def toss_ensemble(disk: Disk, n: int, rng_seed: int, *, e: float = 0.5, mu: floa
         else:
             import multiprocessing as mp
 
-            with mp.get_context("spawn").Pool(workers) as pool:
+            with mp.get_context("spawn").Pool(workers, initializer=_load_compiled) as pool:
                 it = zip(todo, pool.imap(_one, args, chunksize=4))
                 _collect(it, done, fh, progress, n)
     finally:
