@@ -210,3 +210,29 @@ def test_compiled_slip_direction_is_the_defining_root_and_the_scipy_paths(ns, mo
         assert abs(d[0] * ay - d[1] * ax) <= 1e-12 * max(n, 1.0)  # parallel
         assert d[0] * ax + d[1] * ay > 0.0  # and along +d
     assert found >= 40
+
+
+def test_compiled_touchdown_is_where_the_flying_disk_meets_the_plane(ns, monkeypatch):
+    """Touchdown times of random launches (heights from 1e-6 to 2 above the plane, fast
+    spins): the compiled advancement finds the scipy-path time, and there the lowest point
+    of the closed-form free flight (``free_flight``, an independent evaluation) is on the
+    plane while it was above it just before."""
+    from rollingdisk.friction import impact as im
+
+    rng = np.random.default_rng(3)
+    for _ in range(60):
+        h, th = rng.uniform(0, 0.6), rng.uniform(-1.5, 1.5)
+        low = abs(math.cos(th)) + h * abs(math.sin(th))
+        s = [0, 0, low + rng.uniform(0, 2) * rng.choice([1e-6, 1e-3, 1.0]),
+             rng.uniform(-3, 3), th, 0, rng.uniform(-1, 1), rng.uniform(-1, 1),
+             rng.uniform(-1, 3), rng.uniform(-10, 10), rng.uniform(-5, 5), rng.uniform(-5, 5)]
+        disk = rd.Disk(h)
+        t = im.touchdown_time(disk, s)  # compiled: the fixture loaded the loop
+        with monkeypatch.context() as m:
+            m.setattr(fs, "loaded", lambda: False)
+            ref = im.touchdown_time(disk, s)
+        assert t == pytest.approx(ref, rel=1e-13, abs=1e-14)
+        hit = im.free_flight(disk, s, t)
+        assert abs(im._lowest_height(h, hit[2], hit[4])) <= 1e-10
+        before = im.free_flight(disk, s, t * (1 - 1e-6))
+        assert im._lowest_height(h, before[2], before[4]) > -1e-12

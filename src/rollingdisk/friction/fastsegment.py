@@ -365,6 +365,51 @@ def slip_scan(h, mu_k, c_roll, c_pivot, c_air, y, sz, sz_free, n_grid):
     return best_a
 
 
+# ------------------------------------------------------------------ touchdown
+def _flight_height(Z0, VZ0, par, per, crs, Om_p, h, t):
+    """Height of the lowest point of the freely flying disk at ``t``
+    (:func:`rollingdisk.friction.impact.touchdown_time`: the axis precesses uniformly)."""
+    ez = par + per * np.cos(Om_p * t) + crs * np.sin(Om_p * t)
+    ez = min(1.0, max(-1.0, ez))
+    return Z0 + VZ0 * t - 0.5 * t * t - np.sqrt(1.0 - ez * ez) - h * abs(ez)
+
+
+def touchdown_scan(Z0, VZ0, par, per, crs, Om_p, h, t, Ht):
+    """The conservative advancement of :func:`rollingdisk.friction.impact.touchdown_time`
+    from ``t`` (height ``Ht > 0``), compiled; a bracketed root is refined by the Illinois
+    rule (:mod:`rollingdisk.integrate.roots`) to round-off.  ``-1`` if no bracket is found
+    in 100000 advances (a grazing flight: the caller scans a grid)."""
+    spin = Om_p * (1.0 + h)
+    for _ in range(100000):
+        B = max(0.0, -(VZ0 - t)) + spin
+        tau = -B + np.sqrt(B * B + 2.0 * Ht)
+        if tau <= 4e-16 * max(t, 1.0):
+            return t
+        probe = t + 2.0 * tau
+        Hp = _flight_height(Z0, VZ0, par, per, crs, Om_p, h, probe)
+        if Hp <= 0.0:
+            xa = t + tau
+            fa = _flight_height(Z0, VZ0, par, per, crs, Om_p, h, xa)
+            if fa <= 0.0:
+                return xa
+            xb = probe
+            fb = Hp
+            flag = 0
+            for _k in range(200):
+                if _illinois_converged(xa, xb):  # noqa: F821 - namespace
+                    break
+                xc = _illinois_trial(xa, xb, fa, fb)  # noqa: F821
+                fc = _flight_height(Z0, VZ0, par, per, crs, Om_p, h, xc)
+                xa, xb, fa, fb, flag = _illinois_update(xa, xb, fa, fb, xc, fc,  # noqa: F821
+                                                        flag)
+            return xb if fb == 0.0 else 0.5 * (xa + xb)
+        t += tau
+        Ht = _flight_height(Z0, VZ0, par, per, crs, Om_p, h, t)
+        if Ht <= 0.0:
+            return t
+    return -1.0
+
+
 # ------------------------------------------------------------------ namespaces
 #: The functions of the namespace, callees before callers: the Coulomb kernels, this
 #: module's right-hand side and events, DOP853's building blocks, the loop.
@@ -375,7 +420,10 @@ _KERNELS = ("_inertia", "_geometry", "_coulomb_moments", "_coulomb_powers", "_om
 _OWN = ("_cc_solve", "_rhs", "_rhs_col", "_cc_events", "_all_finite", "_vec_finite")
 _DOP = ("_combine", "_step", "_dense_tail", "_dense_coefficients", "_dense_value",
         "_error_norm_v", "_step_factor", "_rms", "_initial_step_scaled", "initial_step_v")
-NAMES = _KERNELS + _OWN + _DOP + ("advance", "_slip_accel_c", "_slip_parts", "slip_scan")
+_ROOTS = ("_illinois_converged", "_illinois_trial", "_illinois_update")
+NAMES = (_KERNELS + _OWN + _DOP + _ROOTS
+         + ("advance", "_slip_accel_c", "_slip_parts", "slip_scan", "_flight_height",
+            "touchdown_scan"))
 
 _compiled = None
 _compile_time = None

@@ -368,6 +368,16 @@ def touchdown_time(disk: Disk, state, *, inside_tol: float = 1e-12) -> float:
         if H(dt) <= 0.0:
             return 0.0
         t, Ht = dt, H(dt)
+    from rollingdisk.friction import fastsegment as _fs
+
+    if _fs.loaded():  # the same advancement compiled (tosses: 9M heights, 14 s -> 0.3 s)
+        tc = _fs.compiled()["touchdown_scan"](float(Z0), float(VZ0), float(par), float(per),
+                                               float(crs), float(Om_p), float(h), float(t),
+                                               float(Ht))
+        if tc < 0.0:
+            raise RuntimeError("touchdown_time: no bracket after 100000 steps (grazing "
+                               "contact)")
+        return float(tc)
     spin = Om_p * (1.0 + h)
     for _ in range(100000):
         B = max(0.0, -(VZ0 - t)) + spin

@@ -480,7 +480,7 @@ def simulate_to_rest(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
                      v_capture: float = 1e-3, zeno_count: int = 20,
                      zeno_window: float = 0.05, rest_energy: float = 1e-10,
                      rtol: float = 1e-10, atol: float = 1e-12, chunk: float = math.inf,
-                     max_steps: int = 2_000_000,
+                     max_steps: int = 2_000_000, max_transitions: int = 10_000,
                      decide: Callable | None = None,
                      progress: Callable[[float], None] | None = None) -> MotionResult:
     """Run the disk through contact, flight, impacts and the flat phase, to rest.
@@ -523,6 +523,9 @@ def simulate_to_rest(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     max_steps : int
         Step budget of one contact segment (:func:`simulate_coulomb`); beyond it the run
         ends ``"failed"``.
+    max_transitions : int
+        Budget of mode events of one contact segment (:func:`simulate_coulomb`; stick-slip
+        chatter); beyond it the run ends ``"failed"``.
     chunk : float
         Longest contact segment [``sqrt(a/g)``] before ``decide`` is asked again.
     decide : callable, optional
@@ -571,6 +574,7 @@ def simulate_to_rest(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
                   v_capture, zeno_count, zeno_window, rest_energy, rtol, atol, chunk,
                   decide, progress)
     run.max_steps = check_int("max_steps", max_steps, low=1)
+    run.max_transitions = check_int("max_transitions", max_transitions, low=1)
     return run.go(y)
 
 
@@ -760,7 +764,9 @@ class _Motion:
         t_stop = min(self.t1, t + self.chunk)
         tr = simulate_coulomb(self.disk, self.ground, (t, t_stop), y, rtol=self.rtol,
                               atol=self.atol, slip_tol=1e-9, alpha_min=self.alpha_flat,
-                              max_steps=self.max_steps,  # the run's wall budget, what is left
+                              max_steps=self.max_steps,
+                              max_transitions=self.max_transitions,
+                              # the run's wall budget, what is left
                               max_wall_time=max(1e-3, self.max_wall
                                                 - (time.perf_counter() - self.wall0)))
         self.segments.append(tr)
@@ -851,12 +857,15 @@ class _Motion:
         are removed and the disk rolls with ``omega2' = L / (1 + k2^2)`` (the rolling
         state of least energy with that ``L``, so the impulse never creates energy).
         Rolling upright under the rolling-resistance moment ``c F_z`` (``F_z = 1``),
-        ``d(3/4 omega2^2)/dt = -c |omega2|``: it stops after ``1.5 |omega2'| / c``."""
+        ``d(3/4 omega2^2)/dt = -c |omega2|``: it stops after ``1.5 |omega2'| / c`` (at once
+        if ``3/4 omega2'^2 <= rest_energy``; never if ``c = 0``)."""
         h = self.h
         psi = s[3]
         cp, sp = math.cos(psi), math.sin(psi)
         v_x = s[6] * cp + s[7] * sp
         w2 = (K2 * s[10] + v_x) / (1.0 + K2)
+        if 0.75 * w2 * w2 <= self.rest_energy:  # nothing left to roll: at rest (rule 3)
+            w2 = 0.0
         s1 = s.copy()
         s1[2], s1[4] = 1.0, 0.0
         s1[6], s1[7], s1[8] = w2 * cp, w2 * sp, 0.0
@@ -865,7 +874,7 @@ class _Motion:
         self._impact_record(t, "tread", s1[6:9] - s[6:9], lost, 0.0)
         self._enter(t, "rolling")
         c = float(self.ground.coefficients[0])
-        dt = math.inf if c == 0.0 else 1.5 * abs(w2) / c
+        dt = 0.0 if w2 == 0.0 else math.inf if c == 0.0 else 1.5 * abs(w2) / c
         t_end = min(t + dt, self.t1)
         tau = t_end - t
         w_end = math.copysign(max(0.0, abs(w2) - c * tau / 1.5), w2) if t_end < t + dt else 0.0

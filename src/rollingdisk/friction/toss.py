@@ -85,6 +85,12 @@ class TossResult:
                 f"t={self.t:.6g}, n_impacts={self.n_impacts})")
 
 
+#: Mode events a contact segment of a toss may take (stick-slip chatter on the rim): a
+#: toss that chatters past them is ``undecided`` either way, so it stops early (measured:
+#: 10 000 events cost about 1.8 s a toss, 1000 about 0.2 s, same verdicts).
+TOSS_MAX_TRANSITIONS = 1000
+
+
 def _classify(h, res: MotionResult):
     s = res.final_state
     if res.status == "at-rest":
@@ -175,7 +181,7 @@ def toss(disk: Disk, height: float, velocity: float, spin: float, tilt: float = 
     res = simulate_to_rest(disk, Coulomb(mu, rolling_resistance=c_roll), (0.0, t_end), s0,
                            e=e, mu_impact=mu, decide=_trap(h) if early else None,
                            chunk=1.0, max_wall=max_wall, rtol=rtol, atol=atol,
-                           max_steps=20_000)
+                           max_steps=20_000, max_transitions=TOSS_MAX_TRANSITIONS)
     out, by = _classify(h, res)
     return TossResult(out, by, res.t_end, len(res.impacts), res)
 
