@@ -38,6 +38,11 @@ import numpy as np
 
 from rollingdisk.friction import coulomb as _cl
 from rollingdisk.integrate import dop853 as _dop
+from rollingdisk.integrate.roots import (
+    _illinois_converged,
+    _illinois_trial,
+    _illinois_update,
+)
 
 #: Fields of the parameter array ``p`` of :func:`_rhs` and :func:`advance`, in order.
 P_FIELDS = ("mode", "mu_k", "mu_s", "c_roll", "c_pivot", "c_air", "ref_X", "ref_Y", "u_eps",
@@ -369,16 +374,17 @@ def slip_scan(h, mu_k, c_roll, c_pivot, c_air, y, sz, sz_free, n_grid):
 def _flight_height(Z0, VZ0, par, per, crs, Om_p, h, t):
     """Height of the lowest point of the freely flying disk at ``t``
     (:func:`rollingdisk.friction.impact.touchdown_time`: the axis precesses uniformly)."""
-    ez = par + per * np.cos(Om_p * t) + crs * np.sin(Om_p * t)
+    ez = par + per * math.cos(Om_p * t) + crs * math.sin(Om_p * t)
     ez = min(1.0, max(-1.0, ez))
-    return Z0 + VZ0 * t - 0.5 * t * t - np.sqrt(1.0 - ez * ez) - h * abs(ez)
+    return Z0 + VZ0 * t - 0.5 * t * t - math.sqrt(1.0 - ez * ez) - h * abs(ez)
 
 
 def touchdown_scan(Z0, VZ0, par, per, crs, Om_p, h, t, Ht):
     """The conservative advancement of :func:`rollingdisk.friction.impact.touchdown_time`
     from ``t`` (height ``Ht > 0``), compiled; a bracketed root is refined by the Illinois
     rule (:mod:`rollingdisk.integrate.roots`) to round-off.  ``-1`` if no bracket is found
-    in 100000 advances (a grazing flight: the caller scans a grid)."""
+    in 100000 advances (a grazing flight: the caller scans a grid).  Plain Python too: the
+    one advancement of :func:`~rollingdisk.friction.impact.touchdown_time`, compiled or not."""
     spin = Om_p * (1.0 + h)
     for _ in range(100000):
         B = max(0.0, -(VZ0 - t)) + spin
@@ -396,11 +402,11 @@ def touchdown_scan(Z0, VZ0, par, per, crs, Om_p, h, t, Ht):
             fb = Hp
             flag = 0
             for _k in range(200):
-                if _illinois_converged(xa, xb):  # noqa: F821 - namespace
+                if _illinois_converged(xa, xb):
                     break
-                xc = _illinois_trial(xa, xb, fa, fb)  # noqa: F821
+                xc = _illinois_trial(xa, xb, fa, fb)
                 fc = _flight_height(Z0, VZ0, par, per, crs, Om_p, h, xc)
-                xa, xb, fa, fb, flag = _illinois_update(xa, xb, fa, fb, xc, fc,  # noqa: F821
+                xa, xb, fa, fb, flag = _illinois_update(xa, xb, fa, fb, xc, fc,
                                                         flag)
             return xb if fb == 0.0 else 0.5 * (xa + xb)
         t += tau
