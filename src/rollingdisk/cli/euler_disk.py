@@ -3,6 +3,7 @@ the exponents near the end fitted and predicted (docs/friction.md).
 
     $ rollingdisk euler-disk
     $ rollingdisk euler-disk --air --out euler --json
+    $ rollingdisk euler-disk --friction coulomb     # set-valued friction, no creep constant
     $ rollingdisk euler-disk --air boundary-layer   # Bildsten's law instead of the film
     $ rollingdisk euler-disk --sound chirp.wav --sound-speed 4   # the whirr, 4x faster
     $ rollingdisk euler-disk --disk euro-1          # a 1-euro coin spun like the toy
@@ -27,7 +28,13 @@ from rollingdisk.cli._format import disk_line, with_si
 
 
 def configure(sub):
-    from rollingdisk.friction.euler_disk import AIR_DENSITY, AIR_LAWS, AIR_VISCOSITY, EulerDisk
+    from rollingdisk.friction.euler_disk import (
+        AIR_DENSITY,
+        AIR_LAWS,
+        AIR_VISCOSITY,
+        FRICTION_LAWS,
+        EulerDisk,
+    )
     from rollingdisk.plotting.reports import EULER_DISK_FILES
     from rollingdisk.plotting.sound import MAX_SECONDS, RATE
 
@@ -37,7 +44,8 @@ def configure(sub):
         description="Euler's disk, by default the commercial toy (radius 37.5 mm, thickness "
         "12.7 mm, 0.45 kg; or any disk with a physical size and mass: --disk NAME, or "
         "--radius/--diameter with --thickness and --mass), started on its spin-in-place "
-        "steady motion and run with creep friction and rolling resistance (and, with --air, "
+        "steady motion and run with creep friction (or, with --friction coulomb, set-valued "
+        "Coulomb friction) and rolling resistance (and, with --air, "
         "air drag: Moffatt's squeeze film or Bildsten's boundary layer) until it falls "
         "flat, lifts off or comes to rest; exponents near the end fitted and predicted "
         "(docs/friction.md); --sound writes its whirr as a WAV file.")
@@ -77,6 +85,12 @@ def configure(sub):
     p.add_argument("--mu", type=real("mu", low=0.0), default=toy.mu,
                    help=f"friction coefficient at saturation, dimensionless (default "
                    f"{toy.mu:g})")
+    p.add_argument("--friction", choices=FRICTION_LAWS, default="creep",
+                   help="contact friction: 'creep' (default), the creep law with --creep, "
+                   "integrated by LSODA (seconds); 'coulomb', set-valued Coulomb friction "
+                   "with no constant to choose, its micro-slip resolved as located "
+                   "rolling/sliding transitions by the compiled DOP853 loop (about 4e7 "
+                   "steps and 5 minutes for the toy; air: the film only)")
     p.add_argument("--creep", type=real("creep", low=0.0, low_open=True),
                    default=toy.creep, help="creep coefficient k > 0: tangential force "
                    "-k F_z u at small slip speed u, u in units sqrt(a g) (so k in units "
@@ -91,11 +105,13 @@ def configure(sub):
     p.add_argument("--alpha0", type=real("alpha0", low=0.0, high=math.pi / 2, low_open=True,
                                          high_open=True),
                    default=toy.alpha0, help=f"initial tilt in rad (default {toy.alpha0:g})")
-    p.add_argument("--max-steps", dest="max_steps", type=positive_int, default=2_000_000,
-                   help="step budget (default 2000000)")
+    p.add_argument("--max-steps", dest="max_steps", type=positive_int, default=None,
+                   help="step budget (default 2000000 with creep friction, 100000000 with "
+                   "coulomb)")
     p.add_argument("--max-wall-time", dest="max_wall_time",
-                   type=real("max_wall_time", low=0.0, low_open=True), default=120.0,
-                   help="wall-clock budget in seconds (default 120)")
+                   type=real("max_wall_time", low=0.0, low_open=True), default=None,
+                   help="wall-clock budget in seconds (default 120 with creep friction, "
+                   "1200 with coulomb)")
     return p
 
 
@@ -108,15 +124,18 @@ def run(args) -> int:
 
     toy = _toy(args, dict(mu=args.mu, creep=args.creep, alpha0=args.alpha0,
                           air_viscosity=AIR_VISCOSITY if args.air else None,
-                          air_law=args.air or "film"))
+                          air_law=args.air or "film", friction=args.friction))
+    coulomb = args.friction == "coulomb"
+    max_steps = args.max_steps or (100_000_000 if coulomb else 2_000_000)
+    max_wall_time = args.max_wall_time or (1200.0 if coulomb else 120.0)
     if args.out is not None:
         check_replaceable(args.out, EULER_DISK_FILES, name="--out")  # before the work
     if args.sound is not None:
         check_writable(args.sound, name="--sound")  # before the work
     bar = ProgressBar(quiet=args.quiet)
     try:
-        result = run_euler_disk(toy, max_steps=args.max_steps,
-                                max_wall_time=args.max_wall_time, progress=bar)
+        result = run_euler_disk(toy, max_steps=max_steps, max_wall_time=max_wall_time,
+                                progress=bar)
     finally:
         bar.close()
     summary = _with_si(result.summary(), result.toy.disk)
@@ -192,6 +211,8 @@ def _print(result) -> None:
     print(f"  exponents      fitted vs predicted, alpha in {result.fit_window}")
     for name in result.exponents:
         print(f"    {name:14s} {result.exponents[name]:+.4f}   {result.predicted[name]:+.4f}")
+    if "transitions" in result.extra:
+        print(f"  transitions    {len(result.extra['transitions'])} (rolling <-> sliding)")
     print(f"  energy balance {result.energy_balance:.2g}")
     print(f"  steps          {result.n_steps}")
     print(f"  wall time      {result.wall_time:.2f} s")

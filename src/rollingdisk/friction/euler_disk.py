@@ -59,7 +59,7 @@ from rollingdisk.util.errors import ParameterError
 
 __all__ = ["EulerDisk", "EulerDiskResult", "run_euler_disk", "predicted_exponents",
            "creep_factor", "predicted_end_time", "END_KINDS", "AIR_VISCOSITY", "FIT_WINDOW",
-           "FIT_WINDOW_AIR", "AIR_DENSITY", "AIR_LAWS", "dissipation_laws"]
+           "FIT_WINDOW_AIR", "AIR_DENSITY", "AIR_LAWS", "FRICTION_LAWS", "dissipation_laws"]
 
 #: Dynamic viscosity of air at 20 C [Pa s] (CRC Handbook), the default of ``--air``.
 AIR_VISCOSITY = 1.81e-5
@@ -68,6 +68,10 @@ AIR_DENSITY = 1.204
 #: The air laws of :class:`EulerDisk`: Moffatt's squeeze film (``Phi ~ Omega^2 / alpha``)
 #: and Bildsten's boundary layer (``Phi ~ Omega^(5/2)``), see ``docs/errata-models.md``.
 AIR_LAWS = ("film", "boundary-layer")
+
+#: Friction laws of :class:`EulerDisk`: the creep law (regularized Coulomb, smooth) or
+#: set-valued Coulomb friction (rolling and sliding with located transitions).
+FRICTION_LAWS = ("creep", "coulomb")
 #: How a run can end (names of :mod:`rollingdisk.model.outcomes`): the three physical ends,
 #: and edge contact (contact passes to the other rim edge, theta = 0, outside the model) --
 #: each with status "completed".
@@ -124,6 +128,14 @@ class EulerDisk:
         |Omega|^(5/2)``, valid above the crossover tilt ``alpha_c``, 4.8e-3 for the toy).
     air_density : float
         Air density [kg/m^3], ``> 0``, for the boundary layer; 1.204 (air at 20 C).
+    friction : {"creep", "coulomb"}
+        ``"creep"`` (default): the creep law above with ``creep`` and the smoothed rolling
+        resistance, integrated by LSODA.  ``"coulomb"``: set-valued Coulomb friction with
+        no constant to choose (``creep`` and ``omega_eps`` unused): the disk rolls while
+        ``|F_t| <= mu F_z`` and slides at ``mu F_z`` otherwise, the micro-slip of the late
+        stage resolved as located rolling/sliding transitions
+        (:func:`rollingdisk.simulate_coulomb`, its compiled loop); rolling resistance
+        ``-c F_z omega_h/|omega_h|`` unsmoothed; air: the squeeze film only.
 
     A toy of any other size: :meth:`from_disk` (e.g. a disk of
     :func:`rollingdisk.model.units.disk_from_options`).
@@ -147,6 +159,7 @@ class EulerDisk:
     omega_eps: float = 1e-6
     air_law: str = "film"
     air_density: float = AIR_DENSITY
+    friction: str = "creep"
 
     def __post_init__(self):
         for name in ("radius", "thickness", "mass", "gravity", "creep", "omega_eps",
@@ -164,6 +177,12 @@ class EulerDisk:
         if not isinstance(self.air_law, str) or self.air_law not in AIR_LAWS:
             raise ParameterError(f"air_law must be one of {', '.join(AIR_LAWS)}, got "
                                  f"{self.air_law!r}")
+        if not isinstance(self.friction, str) or self.friction not in FRICTION_LAWS:
+            raise ParameterError(f"friction must be one of {', '.join(FRICTION_LAWS)}, got "
+                                 f"{self.friction!r}")
+        if self.friction == "coulomb" and self.air_viscosity and self.air_law != "film":
+            raise ParameterError("friction 'coulomb' takes the squeeze-film air law only "
+                                 f"(air_law='film'), got air_law={self.air_law!r}")
 
     @classmethod
     def from_disk(cls, disk: Disk, **parameters) -> EulerDisk:
@@ -234,7 +253,8 @@ class EulerDisk:
                 "rolling_resistance": self.rolling_resistance,
                 "air_viscosity": self.air_viscosity, "alpha0": self.alpha0,
                 "omega_eps": self.omega_eps, "air_law": self.air_law,
-                "air_density": self.air_density, "h": self.h, "time_unit_s": self.time_unit,
+                "air_density": self.air_density, "friction": self.friction,
+                "h": self.h, "time_unit_s": self.time_unit,
                 "c_air": self.c_air, "c_boundary_layer": self.c_boundary_layer}
 
 
@@ -338,6 +358,8 @@ class EulerDiskResult:
                 "energy_balance": fin(self.energy_balance),
                 "dissipated": {k: float(v[-1]) for k, v in self.dissipated.items()},
                 "n_steps": self.n_steps, "wall_time_s": self.wall_time,
+                "n_transitions": (len(self.extra["transitions"])
+                                  if "transitions" in self.extra else None),
                 "parameters": self.toy.as_dict()}
 
     def as_columns(self, max_rows: int = 4000) -> dict:
@@ -546,6 +568,15 @@ def _initial_state(toy: EulerDisk) -> np.ndarray:
     return np.array([m.v_Cx0, m.v_Cy0, m.theta0, 0.0, m.omega20, m.omega30, 0.0, 0.0, 0.0])
 
 
+def _kicked_state(toy: EulerDisk, kick: float) -> np.ndarray:
+    """:func:`_initial_state` with ``omega1`` raised by ``kick`` and ``v_Cy = omega1 z_P``,
+    so that the disk still rolls (eq. 6)."""
+    x0 = _initial_state(toy)
+    x0[3] += kick
+    x0[1] = kick * _geometry(toy.h, x0[2])[5]
+    return x0
+
+
 # ------------------------------------------------------------------ predictions
 def _family(h, alpha):
     """The spin-in-place family at tilt ``alpha`` (``theta0 = pi/2 - alpha > 0``):
@@ -703,8 +734,13 @@ def _locate(dense, event, t_a, t_b):
     return t, dense(t)
 
 
+#: Tolerances of :func:`run_euler_disk` by friction law: LSODA's on the creep law,
+#: DOP853's on Coulomb friction (the energy balance of the whole run stays below 1e-8).
+TOLERANCES = {"creep": (1e-9, 1e-11), "coulomb": (1e-10, 1e-12)}
+
+
 def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
-                   t_max: float = 1e5, rtol: float = 1e-9, atol: float = 1e-11,
+                   t_max: float = 1e5, rtol: float | None = None, atol: float | None = None,
                    max_steps: int = 2_000_000, max_wall_time: float = 120.0,
                    fit_window: tuple | None = None, predict: bool = True, kick: float = 0.0,
                    progress: Callable[[float], None] | None = None) -> EulerDiskResult:
@@ -718,10 +754,13 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
         "Fell flat" when ``alpha <= alpha_end``, in ``(0, alpha0)``.
     t_max : float
         Stop (status ``"failed"``) at this time if no end came, ``> 0``.
-    rtol, atol : float
-        LSODA tolerances, ``rtol`` in ``[1e-13, 1e-3]``, ``atol > 0``.
+    rtol, atol : float, optional
+        Tolerances, ``rtol`` in ``[1e-13, 1e-3]``, ``atol > 0``: LSODA's on the creep law
+        (default 1e-9, 1e-11), DOP853's on Coulomb friction (default 1e-10, 1e-12;
+        :data:`TOLERANCES`).
     max_steps : int
-        Step budget, ``>= 1``.
+        Step budget, ``>= 1`` (Coulomb friction: about 4e7 steps for the toy, mostly
+        micro-slip at the end, so pass ``max_steps=10**8`` and a wall budget of minutes).
     max_wall_time : float
         Wall-clock budget [s], ``> 0``.
     fit_window : (float, float), optional
@@ -748,8 +787,10 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
     -----
     Ends: fell flat (``alpha <= alpha_end``), lifted off (``F_z < 0``, eq. 11), came to
     rest (``|omega|`` and ``|v_C|`` below ``1e-10``), edge contact (``theta`` changes sign,
-    ``h > 0``).  Events are checked at every accepted step; the end time is the step's end
-    (steps are short there: about 1e-3 time units at the end of the toy's run).
+    ``h > 0``).  Events are checked at every accepted step and located on its dense output.
+    With ``toy.friction == "coulomb"`` the run is :func:`rollingdisk.simulate_coulomb` (its
+    compiled loop once loaded) from the same state, ``alpha_end`` its ``alpha_min``; the
+    result's ``extra`` holds its ``"transitions"`` (rolling <-> sliding) as well.
     Step sizes collapsing: 50 accepted steps in a row shorter than ``1e-12 (1 + t)``.
 
     Examples
@@ -761,7 +802,10 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
     toy, alpha_end, t_max, rtol, atol, max_steps, max_wall_time, kick, (lo, hi) = \
         _check_run_arguments(toy, alpha_end, t_max, rtol, atol, max_steps, max_wall_time,
                              kick, fit_window)
-    run = _ToyRun(toy, alpha_end, t_max, rtol, atol, kick)
+    if toy.friction == "coulomb":
+        run = _CoulombToyRun(toy, alpha_end, t_max, rtol, atol, kick)
+    else:
+        run = _ToyRun(toy, alpha_end, t_max, rtol, atol, kick)
     run.integrate(max_steps, max_wall_time, progress)
     return _result(run, (lo, hi), predict)
 
@@ -775,8 +819,10 @@ def _check_run_arguments(toy, alpha_end, t_max, rtol, atol, max_steps, max_wall_
     alpha_end = check_real("alpha_end", alpha_end, low=0.0, high=toy.alpha0, low_open=True,
                            high_open=True)
     t_max = check_real("t_max", t_max, low=0.0, low_open=True)
-    rtol = check_real("rtol", rtol, low=1e-13, high=1e-3)
-    atol = check_real("atol", atol, low=0.0, low_open=True)
+    rtol = check_real("rtol", TOLERANCES[toy.friction][0] if rtol is None else rtol,
+                      low=1e-13, high=1e-3)
+    atol = check_real("atol", TOLERANCES[toy.friction][1] if atol is None else atol, low=0.0,
+                      low_open=True)
     max_steps = check_int("max_steps", max_steps, low=1)
     max_wall_time = check_real("max_wall_time", max_wall_time, low=0.0, low_open=True)
     kick = check_real("kick", kick)
@@ -805,9 +851,7 @@ class _ToyRun:
         self.params = (toy.h, mu, u_s, toy.rolling_resistance, toy.c_air, toy.omega_eps)
         self.c_bl = toy.c_boundary_layer
         self.last = [1.0]  # F_z of the latest evaluation (near the accepted point) for lift-off
-        x0 = _initial_state(toy)
-        x0[3] += kick
-        x0[1] = kick * _geometry(toy.h, x0[2])[5]  # v_Cy = omega1 z_P: still rolling (6)
+        x0 = _kicked_state(toy, kick)
         self.solver = LSODA(self._f, 0.0, x0, t_max, rtol=rtol, atol=atol)
         self.ts, self.xs = [0.0], [x0.copy()]
         self.log_span = math.log(toy.alpha0 / alpha_end)
@@ -825,6 +869,13 @@ class _ToyRun:
     def _f(self, t, x):
         dx, self.last[0], _ = _rhs(*self.params, x, c_bl=self.c_bl)
         return dx
+
+    def forces(self, XT):
+        """``(F_z, |u|)`` at the recorded states ``XT`` (9, N)."""
+        return _rhs(*self.params, XT, c_bl=self.c_bl)[1:]
+
+    def extra(self) -> dict:
+        return {}
 
     def integrate(self, max_steps, max_wall_time, progress):
         """Step until an end, a budget, ``t_max`` or a failure (``message`` says which)."""
@@ -917,13 +968,13 @@ class _ToyRun:
 def _result(run, window, predict):
     """The :class:`EulerDiskResult` of a finished :class:`_ToyRun`: observables along the
     run, the energy balance, fitted and predicted exponents."""
-    toy, params = run.toy, run.params
+    toy = run.toy
     h = toy.h
     t = np.array(run.ts)
     X = np.array(run.xs)
     XT = X.T  # (9, N): every recorded quantity in one element-wise call
     alpha, Omega, vp = _observables(h, XT)
-    _, fz, us = _rhs(*params, XT, c_bl=run.c_bl)
+    fz, us = run.forces(XT)
     E = _energy(h, XT)
     dissipated = {k: X[:, 6 + i] for i, k in enumerate(TERMS)}
     total = E + X[:, 6:].sum(axis=1)
@@ -939,4 +990,83 @@ def _result(run, window, predict):
                            status=run.status, message=run.message, t0=t0, exponents=fitted,
                            predicted=predicted, fit_window=window, predicted_t_end=pred_end,
                            predicted_t0=pred_t0, energy_balance=balance, n_steps=run.n,
-                           wall_time=time.monotonic() - run.start, extra={"state": X})
+                           wall_time=time.monotonic() - run.start,
+                           extra={"state": X, **run.extra()})
+
+
+class _CoulombToyRun:
+    """One run of :func:`run_euler_disk` on Coulomb ground: :func:`rollingdisk.
+    simulate_coulomb` from the toy's state, its trajectory in the reduced variables of
+    :class:`_ToyRun` (``ts``, ``xs``; ``end``, ``status``, ``message``, ``n``)."""
+
+    #: simulate_coulomb's statuses that are ends of the toy's run.
+    ENDS = {"fell-flat": "fell-flat", "lift-off": "lift-off", "edge-contact": "edge-contact"}
+
+    def __init__(self, toy, alpha_end, t_max, rtol, atol, kick):
+        self.toy, self.alpha_end, self.t_max, self.rtol, self.atol = (toy, alpha_end, t_max,
+                                                                      rtol, atol)
+        self.start = time.monotonic()
+        self.x0 = _kicked_state(toy, kick)
+        self.end, self.status, self.message = None, "failed", ""
+        self.n = 0
+        self.traj = None
+        self.ts, self.xs = [0.0], [self.x0.copy()]
+
+    def ground(self):
+        from rollingdisk.friction.ground import Coulomb
+
+        toy = self.toy
+        return Coulomb(toy.mu, rolling_resistance=toy.rolling_resistance or None,
+                       air=toy.c_air or None)
+
+    def integrate(self, max_steps, max_wall_time, progress):
+        from rollingdisk.friction.hybrid import simulate_coulomb
+
+        toy, x0 = self.toy, self.x0
+        y0 = np.array([0.0, 0.0, x0[0], x0[1], 0.0, x0[2], 0.0, x0[3], x0[4], x0[5]])
+        report = None
+        if progress is not None:
+            t_guess = max(predicted_end_time(toy, self.alpha_end)[0], 1.0)
+            if not math.isfinite(t_guess):
+                t_guess = self.t_max
+
+            def report(fraction):  # fraction of (0, t_max) -> of the predicted end time
+                progress(min(fraction * self.t_max / t_guess, 0.99))
+        tr = simulate_coulomb(
+            Disk(toy.h), self.ground(), (0.0, self.t_max), y0, rtol=self.rtol,
+            atol=self.atol, max_steps=max_steps, max_transitions=max_steps,
+            max_wall_time=max(max_wall_time - (time.monotonic() - self.start), 1e-3),
+            max_points=COULOMB_POINTS, alpha_min=self.alpha_end, progress=report)
+        self.traj, self.n = tr, tr.n_steps
+        Y = tr.y
+        cp, sp = np.cos(Y[4]), np.sin(Y[4])
+        D = tr.dissipated
+        self.ts = tr.t
+        self.xs = np.column_stack([Y[2] * cp + Y[3] * sp, -Y[2] * sp + Y[3] * cp, Y[5],
+                                   Y[7], Y[8], Y[9], D["slip"],
+                                   D["rolling_resistance"] + D["pivot"], D["air"]])
+        if tr.status in self.ENDS:
+            self.end, self.status = self.ENDS[tr.status], "completed"
+            self.message = tr.message
+        elif tr.status == "completed":
+            self.message = (f"reached t_max = {self.t_max:g} before any end (alpha = "
+                            f"{math.pi / 2 - abs(Y[5, -1]):.3g})")
+        else:
+            self.message = tr.message
+        if progress is not None:
+            progress(1.0 if self.end is not None else 0.0)
+
+    def forces(self, XT):
+        """``(F_z, |u|)`` at the recorded points: the contact force of each point's mode."""
+        tr = self.traj
+        u_x, u_y = _cl._slip_velocity(self.toy.h, tr.y)
+        return tr.F_z, np.hypot(u_x, u_y)
+
+    def extra(self) -> dict:
+        tr = self.traj
+        return {"transitions": tr.transitions, "mode": tr.mode, "method": tr.method}
+
+
+#: Most points :class:`_CoulombToyRun` stores (every k-th step beyond, and every
+#: transition): the toy's run takes about 4e7 steps.
+COULOMB_POINTS = 400_000

@@ -278,6 +278,9 @@ PY_BUDGET = 0.5
 COMPILE_ROOM = 30.0
 #: Steps the compiled loop takes between returns to Python (wall budget, progress, signals).
 CHUNK = 1024
+
+#: Seconds of wall clock between two calls of ``progress`` at most (while the run steps).
+REPORT_EVERY = 0.5
 _py_seconds = 0.0
 METHODS = ("auto", "compiled", "scipy")
 
@@ -332,7 +335,8 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     guards : bool
         Stop at lift-off, edge contact and falling flat (default).
     progress : callable, optional
-        ``progress(fraction)``, called at most about 100 times.
+        ``progress(fraction)`` with the fraction of ``t_span`` done, called about every
+        percent of it and at least every :data:`REPORT_EVERY` seconds.
     method : {"auto", "compiled", "scipy"}
         ``"scipy"``: scipy's DOP853 driven from Python.  ``"compiled"``: the steps without
         events in the compiled loop of :mod:`rollingdisk.friction.fastsegment` (numba;
@@ -460,7 +464,7 @@ class _Hybrid:
         self.n_mode_events = 0
         self.last_turn = None
         self.next_report = 0.01
-        self.wall0 = time.perf_counter()
+        self.wall0 = self.last_report = time.perf_counter()
         self.t = t0
         self.z = np.concatenate([y, np.zeros(4)])
         self.run.sz = -1.0 if _cl._omega_z(y[5], y[8], y[9]) < 0.0 else 1.0
@@ -714,11 +718,16 @@ class _Hybrid:
         return g_old
 
     def _report(self):
-        """Call ``progress`` about every percent of the span."""
+        """Call ``progress`` about every percent of the span, and at least every
+        :data:`REPORT_EVERY` seconds of wall clock (a long run with a far end time)."""
+        if self.progress is None:
+            return
         done = (self.t - self.t0) / (self.t1 - self.t0)
-        if self.progress is not None and done >= self.next_report:
+        now = time.perf_counter()
+        if done >= self.next_report or now - self.last_report >= REPORT_EVERY:
             self.progress(min(1.0, done))
             self.next_report = done + 0.01
+            self.last_report = now
 
     def _on_event(self, sol, k, te):
         """Handle event ``k`` at ``te``: a terminal guard ends the run; the end of a mode
