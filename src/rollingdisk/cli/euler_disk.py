@@ -88,9 +88,11 @@ def configure(sub):
     p.add_argument("--friction", choices=FRICTION_LAWS, default="creep",
                    help="contact friction: 'creep' (default), the creep law with --creep, "
                    "integrated by LSODA (seconds); 'coulomb', set-valued Coulomb friction "
-                   "with no constant to choose, its micro-slip resolved as located "
-                   "rolling/sliding transitions by the compiled DOP853 loop (about 4e7 "
-                   "steps and 5 minutes for the toy; air: the film only)")
+                   "with no constant to choose, rolling and sliding with located "
+                   "transitions (compiled DOP853; air: the film only). Its micro-slip costs "
+                   "about 1e5 steps per time unit: a lower or rougher disk runs to its end "
+                   "(--alpha0 0.1 --rolling-resistance 0.01 --mu 1: 13 s), the toy itself "
+                   "ends on the budget (docs/friction.md)")
     p.add_argument("--creep", type=real("creep", low=0.0, low_open=True),
                    default=toy.creep, help="creep coefficient k > 0: tangential force "
                    "-k F_z u at small slip speed u, u in units sqrt(a g) (so k in units "
@@ -111,7 +113,7 @@ def configure(sub):
     p.add_argument("--max-wall-time", dest="max_wall_time",
                    type=real("max_wall_time", low=0.0, low_open=True), default=None,
                    help="wall-clock budget in seconds (default 120 with creep friction, "
-                   "1200 with coulomb)")
+                   "600 with coulomb)")
     return p
 
 
@@ -127,7 +129,7 @@ def run(args) -> int:
                           air_law=args.air or "film", friction=args.friction))
     coulomb = args.friction == "coulomb"
     max_steps = args.max_steps or (100_000_000 if coulomb else 2_000_000)
-    max_wall_time = args.max_wall_time or (1200.0 if coulomb else 120.0)
+    max_wall_time = args.max_wall_time or (600.0 if coulomb else 120.0)
     if args.out is not None:
         check_replaceable(args.out, EULER_DISK_FILES, name="--out")  # before the work
     if args.sound is not None:
