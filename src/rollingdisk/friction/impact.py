@@ -81,6 +81,12 @@ def _rot_z(a):
     return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
+def _cross(a, b):
+    """``a x b`` of two 3-vectors (numpy's cross costs 30 us a call, this 2 us)."""
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                     a[0] * b[1] - a[1] * b[0]])
+
+
 def _rot_x(a):
     c, s = math.cos(a), math.sin(a)
     return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
@@ -216,7 +222,7 @@ def angular_momentum(disk: Disk, state, about=None) -> np.ndarray:
     o = np.asarray(about, dtype=float)
     if o.shape != (3,) or not np.all(np.isfinite(o)):
         raise ParameterError(f"about must be a finite point (X, Y, Z), got {about!r}")
-    return L + np.cross(s[0:3] - o, s[6:9])
+    return L + _cross(s[0:3] - o, s[6:9])
 
 
 # ------------------------------------------------------------------ lowest point
@@ -351,7 +357,7 @@ def touchdown_time(disk: Disk, state, *, inside_tol: float = 1e-12) -> float:
     u = L / nL if nL > 0.0 else np.array([0.0, 0.0, 1.0])
     par = (u @ eta0) * u[2]
     per = eta0[2] - par
-    crs = np.cross(u, eta0)[2]
+    crs = u[0] * eta0[1] - u[1] * eta0[0]  # (u x eta0)_Z
     Z0, VZ0 = s[2], s[8]
 
     def H(t):
@@ -476,18 +482,25 @@ def _solve_law(W, gamma, e_n, e_t, mu):
 
     n = 720
     betas = np.linspace(0.0, 2.0 * math.pi, n + 1)
-    vals = [parts(x) for x in betas]
-    gs = [v[0][0] * v[3][1] - v[0][1] * v[3][0] for v in vals]
+    # parts() at every beta at once (the scan; the roots are refined by parts() itself)
+    cb, sb = np.cos(betas), np.sin(betas)
+    dens = W[2, 2] - mu * (WNT[0] * cb + WNT[1] * sb)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        LNs = -b[2] / dens
+        xi0 = b[0] + LNs * (WTN[0] - mu * (WT[0, 0] * cb + WT[0, 1] * sb))
+        xi1 = b[1] + LNs * (WTN[1] - mu * (WT[1, 0] * cb + WT[1, 1] * sb))
+    gs = cb * xi1 - sb * xi0
     roots = []
-    for i in range(n):
-        if vals[i][1] <= 0.0 or vals[i + 1][1] <= 0.0:
-            continue
-        if gs[i] == 0.0 or gs[i] * gs[i + 1] < 0.0:
-            beta = betas[i] if gs[i] == 0.0 else brentq(g, betas[i], betas[i + 1],
-                                                        xtol=1e-16, rtol=8.9e-16)
-            tv, den, LN, xiT = parts(beta)
-            if tv @ xiT > 0.0 and LN > 0.0:
-                roots.append((beta, LN))
+    for i in np.flatnonzero((dens[:-1] > 0.0) & (dens[1:] > 0.0)
+                            & ((gs[:-1] == 0.0) | (gs[:-1] * gs[1:] < 0.0))):
+        ga, gb = g(betas[i]), g(betas[i + 1])
+        if ga * gb < 0.0:
+            beta = brentq(g, betas[i], betas[i + 1], xtol=1e-16, rtol=8.9e-16)
+        else:  # a zero at an end (or the scan's and g's rounding disagree there)
+            beta = betas[i] if abs(ga) <= abs(gb) else betas[i + 1]
+        tv, den, LN, xiT = parts(beta)
+        if tv @ xiT > 0.0 and LN > 0.0:
+            roots.append((beta, LN))
     if not roots:
         raise RuntimeError("impact law: no sliding solution found (please report)")
     beta, LN = max(roots, key=lambda x: x[1])
@@ -582,13 +595,13 @@ def _impact(h, s, r, e_n, e_t, mu, mode_tol):
     Qx = _rot_x(theta)
     V = Rz.T @ s[6:9]  # Cxyz
     w = Qx @ s[9:12]  # Cxyz
-    gam = V + np.cross(w, r)
+    gam = V + _cross(w, r)
     Jinv, Rx = _jacobian_parts(h, theta, r)
     W = np.eye(3) + Rx.T @ Jinv @ Rx
     Lam, stick = _solve_law(W, gam, e_n, e_t, mu)
     V2 = V + Lam
-    w2 = w + Jinv @ np.cross(r, Lam)
-    gam2 = V2 + np.cross(w2, r)
+    w2 = w + Jinv @ _cross(r, Lam)
+    gam2 = V2 + _cross(w2, r)
     post = s.copy()
     post[6:9] = Rz @ V2
     post[9:12] = Qx.T @ w2
@@ -770,7 +783,7 @@ def rolling_state_from_free(disk: Disk, ground: str, state, atol: float = 1e-9
     side = 1 if theta >= 0.0 else -1  # h~ = h sgn(theta), theta = 0 counts as 0+
     r = _r_xyz(h, theta, side, 1.0)
     V = _rot_z(psi).T @ s[6:9]
-    gam = V + np.cross(_rot_x(theta) @ s[9:12], r)
+    gam = V + _cross(_rot_x(theta) @ s[9:12], r)
     if abs(gam[2]) > atol * max(1.0, float(np.linalg.norm(V))):
         raise ParameterError(f"state: the contact point moves off the plane (normal "
                                 f"velocity {gam[2]:.3g})")

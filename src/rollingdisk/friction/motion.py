@@ -31,6 +31,7 @@ from rollingdisk.friction.coulomb import MODE_NAMES, coulomb_contact, coulomb_en
 from rollingdisk.friction.ground import Coulomb
 from rollingdisk.friction.hybrid import simulate_coulomb, slip_direction
 from rollingdisk.friction.impact import (
+    _cross,
     _lowest_height,
     _r_xyz,
     _rot_x,
@@ -261,7 +262,7 @@ def _edge_velocity(h, s, side):
     r = _r_xyz(h, theta, side, 1.0 if math.cos(theta) >= 0.0 else -1.0)
     V = _rot_z(psi).T @ s[6:9]
     w = _rot_x(theta) @ s[9:12]
-    return V + np.cross(w, r), s[2] + r[2]
+    return V + _cross(w, r), s[2] + r[2]
 
 
 def _normalise_launch(s):
