@@ -187,6 +187,11 @@ class _Run:
         self.coeffs = ground.coefficients
         self.c_pivot = self.coeffs[1]
         self.ref = (1.0, 0.0)  # inertial slip reference direction (sliding)
+        # a slip started from u = 0 is resolved once |u| passes a floor (_start_sliding):
+        # until then its end is not looked for and the friction keeps the direction ref
+        self.armed = True
+        self.u_eps = U_EPS  # |u| below which the friction direction is ref
+        self.floor = 0.0
         self.sz = 1.0  # sgn(omega_z) on the segment (pivot not stuck)
         self.n_rhs = 0
 
@@ -202,7 +207,7 @@ class _Run:
             dy, F_x, F_y, F_z, P1, P2, P3, L = _cl._coulomb_rolling_pivot(h, *cf, z, sz)
             return dy, F_x, F_y, F_z, 0.0, P1, P2, P3, L
         return _cl._coulomb_sliding_pivot(h, self.g.mu_k, *cf, z, self.ref[0], self.ref[1],
-                                          U_EPS, sz)
+                                          self.u_eps, sz)
 
     def rhs(self, mode):
         def f(t, z):
@@ -594,11 +599,11 @@ class _Hybrid:
         run, o, mode, g = self.run, self.o, self.mode, self.ground
         c_roll, c_pivot, c_air = run.coeffs
         p = np.array([mode, g.mu_k, g.mu_s, c_roll, c_pivot, c_air, run.ref[0], run.ref[1],
-                      U_EPS, run.sz, run.side, run.alpha_min], dtype=float)
+                      run.u_eps, run.sz, run.side, run.alpha_min], dtype=float)
         atolv = np.full(self.z.shape[0], float(o["atol"]))
         edge = self.h > 0 and self.guards
-        active = np.array([True, c_pivot > 0.0, self.guards, edge, self.guards],
-                          dtype=np.bool_)
+        active = np.array([run.armed or mode & 1 == ROLLING, c_pivot > 0.0, self.guards,
+                           edge, self.guards], dtype=np.bool_)
         ts = np.empty(CHUNK)
         zs = np.empty((CHUNK, self.z.shape[0]))
         advance = ns["advance"]
@@ -608,7 +613,9 @@ class _Hybrid:
             with np.errstate(all="ignore"):
                 (status, m, n, n_rhs, t, y, dt_next, t_new, dt, y_new, F) = advance(
                     p, self.h, self.t, self.z, self.t1, dt_try, o["rtol"], atolv,
-                    float(o["max_step"]), min(o["max_steps"] - self.n_steps, CHUNK), active, ts, zs)
+                    float(o["max_step"]),
+                    min(o["max_steps"] - self.n_steps, CHUNK if active[0] else 1), active, ts,
+                    zs)
             self.n_steps += n
             run.n_rhs += n_rhs
             add = self.points.add
@@ -616,6 +623,10 @@ class _Hybrid:
                 add(float(ts[i]), zs[i], mode)
             run.ref = (float(p[6]), float(p[7]))
             self.t, self.z = float(t), y.copy()
+            if not active[0] and m and self._arms(self.z):  # one step a call while not armed
+                active[0] = True
+                p[8] = run.u_eps
+                p[6], p[7] = run.ref
             self._report()
             if status == _fs.COMPLETED:
                 return False
@@ -708,7 +719,7 @@ class _Hybrid:
         self.t, self.z = t, z
         self.points.add(self.t, self.z, mode)
         g_old = run.events(mode, self.z)
-        if mode & 1 == SLIDING:
+        if mode & 1 == SLIDING and (run.armed or self._arms(self.z)):
             U = _inertial_slip(self.h, self.z)
             n = math.hypot(*U)
             if n > U_EPS:
@@ -716,6 +727,24 @@ class _Hybrid:
                 g_old = run.events(mode, self.z)
         self._report()
         return g_old
+
+    def _arms(self, z):
+        """Whether a slip started from ``u = 0`` has now passed its floor ``STICK_TOL (1 +
+        |V|)`` (then its end is looked for again and the friction follows ``u/|u|``).
+
+        Below the floor ``u``, a difference of velocities of order 1, is not resolved by
+        the integration (its interpolant's error is larger than it: at rtol 1e-8 a slip of
+        1e-8 changes sign several times on one step's dense output), so a zero of ``u .
+        ref`` there is not an event: it stalled tosses in thousands of slip-restarts at one
+        instant.  The friction keeps the consistent direction of the rolling -> sliding
+        scan, ``ref``, meanwhile; the floor is the one at which an event counts the slip
+        as at rest (:meth:`_slip_turned`)."""
+        run = self.run
+        U = _inertial_slip(self.h, z)
+        if math.hypot(*U) <= run.floor:
+            return False
+        run.armed, run.u_eps = True, U_EPS
+        return True
 
     def _report(self):
         """Call ``progress`` about every percent of the span, and at least every
@@ -854,6 +883,8 @@ def _start_sliding(run, disk, ground, z, stuck=0):
         n = math.hypot(F_x, F_y) or 1.0
         d = (-F_x / n, -F_y / n)
     run.ref = _cl._to_inertial(z[4], d[0], d[1])
+    run.armed = False  # the slip's end is looked for once |u| passes the floor (_arms)
+    run.floor = run.u_eps = STICK_TOL * (1.0 + math.hypot(z[2], z[3]))
     return SLIDING
 
 
@@ -861,7 +892,7 @@ def _first_event(run, mode, sol, ta, tb, g_old, edge, guards):
     """The first event in ``(ta, tb]`` on the dense output ``sol``: ``(index, time)``."""
     from scipy.optimize import brentq
 
-    active = [True, run.c_pivot > 0.0, guards, edge, guards]
+    active = [run.armed or mode & 1 == ROLLING, run.c_pivot > 0.0, guards, edge, guards]
     ts = np.linspace(ta, tb, _N_SAMPLE)
     prev = g_old
     best = None
