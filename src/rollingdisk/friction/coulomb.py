@@ -33,14 +33,20 @@ COULOMB_STATE = SMOOTH_STATE
 
 #: Integer codes of the modes of a Coulomb run (``Trajectory.mode``): the contact rolls or
 #: slides (bit 0); bit 1 (:data:`PIVOT_STUCK`) is set while the pivot sticks, the vertical
-#: spin ``omega_z`` held at 0 by the pivoting-friction moment (issue 22).
+#: spin ``omega_z`` held at 0 by the pivoting-friction moment (issue 22); bit 2
+#: (:data:`ROLL_STUCK`) while the rolling resistance sticks, the horizontal angular velocity
+#: ``omega_h`` held at 0 by the rolling-resistance moment.
 ROLLING, SLIDING = 0, 1
 PIVOT_STUCK = 2
 ROLLING_PIVOT_STUCK, SLIDING_PIVOT_STUCK = ROLLING | PIVOT_STUCK, SLIDING | PIVOT_STUCK
+ROLL_STUCK = 4
 
 
-#: Mode code -> name (codes 0, 1 as before; 2, 3 the pivot-stuck sub-modes).
-MODE_NAMES = ("rolling", "sliding", "rolling, pivot stuck", "sliding, pivot stuck")
+#: Mode code -> name (codes 0, 1 as before; 2, 3 the pivot-stuck sub-modes; 4-7 the same
+#: four with the rolling resistance stuck).
+MODE_NAMES = ("rolling", "sliding", "rolling, pivot stuck", "sliding, pivot stuck",
+              "rolling, roll stuck", "sliding, roll stuck", "rolling, pivot stuck, roll stuck",
+              "sliding, pivot stuck, roll stuck")
 
 
 def _rolling_solve(h, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z):
@@ -296,6 +302,196 @@ def _coulomb_sliding_pivot(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_e
           w3 / c, w1, w2 - w3 * p, d1, d2, d3)  # eq. (2)
     return (dy, F_x, F_y, F_z, F_x * u_x + F_y * u_y, P1, _omega_z(theta, w2, w3) * L, P3,
             L)
+
+
+# ----------------------------------------------------- set-valued rolling resistance
+# The rolling-resistance moment -c F_z omega_h/|omega_h| is set-valued at omega_h = 0: there
+# it is whatever keeps omega_h = 0, as long as |M_h| <= c F_z ("roll stuck",
+# rollingdisk.symbolic.coulomb.derive_roll_stuck).  Outside it the kernels take an inertial
+# reference direction ``rr`` (the direction of omega_h when the step began) and use the
+# direction sgn(omega_h . rr) omega_h/|omega_h| (``rr`` itself where |omega_h| <= w_eps): the
+# smooth continuation through omega_h = 0, on which the hybrid driver locates the zero, as
+# the slip reference does for sliding.
+def _roll_direction(theta, psi, w1, w2, w3, rr_X, rr_Y, w_eps):
+    """``(omega_x, omega_y, e_x, e_y)``: the horizontal angular velocity and the direction
+    ``e`` (Cxyz) of the rolling-resistance moment ``-c F_z e``: ``sgn(omega_h . rr)
+    omega_h/|omega_h|``, or ``rr`` (inertial, turned into Cxyz) where ``|omega_h| <=
+    w_eps``."""
+    wx = w1
+    wy = w2 * np.cos(theta) - w3 * np.sin(theta)
+    cp = np.cos(psi)
+    sp = np.sin(psi)
+    r_x = rr_X * cp + rr_Y * sp
+    r_y = -rr_X * sp + rr_Y * cp
+    n = np.sqrt(wx * wx + wy * wy)
+    if n > w_eps and n > 0.0:
+        sig = 1.0
+        if wx * r_x + wy * r_y < 0.0:
+            sig = -1.0
+        return wx, wy, sig * wx / n, sig * wy / n
+    return wx, wy, r_x, r_y
+
+
+def _mode_moments(c_roll, c_pivot, c_air, theta, e_x, e_y, w3, sz, roll_stuck):
+    """``M0, M1`` (Cxyz) of a mode: air, rolling resistance ``-c F_z e`` (none while
+    ``roll_stuck``: an unknown), pivot ``-c F_z sz`` (``sz = 0``: stuck, an unknown)."""
+    M0x, M0y, M0z, _, _, _ = _coulomb_moments(0.0, 0.0, c_air, theta, 0.0, 0.0, w3)
+    if roll_stuck:
+        return M0x, M0y, M0z, 0.0, 0.0, -c_pivot * sz
+    return M0x, M0y, M0z, -c_roll * e_x, -c_roll * e_y, -c_pivot * sz
+
+
+def _hold_h(theta, w1, w2, w3, d2, d3, r2y, r3y, r2z, r3z, pivot_stuck):
+    """The moments ``(M_hy, M_piv)`` that make ``d omega_y/dt = 0`` (and ``d omega_z/dt = 0``
+    if ``pivot_stuck``; else ``M_piv = 0``), when unit moments ``M_y``, ``M_z`` change
+    ``(domega2, domega3)`` by ``(r2y, r3y)``, ``(r2z, r3z)``."""
+    s = np.sin(theta)
+    c = np.cos(theta)
+    gy = d2 * c - d3 * s - w1 * (w2 * s + w3 * c)  # d omega_y/dt
+    ay = r2y * c - r3y * s
+    if not pivot_stuck:
+        return -gy / ay, 0.0
+    gz = d2 * s + d3 * c + w1 * (w2 * c - w3 * s)  # d omega_z/dt
+    az = r2z * c - r3z * s
+    by = r2y * s + r3y * c
+    bz = r2z * s + r3z * c
+    det = ay * bz - az * by
+    return (az * gz - gy * bz) / det, (gy * by - ay * gz) / det
+
+
+def _rolling_response(ht, s, c, k1, My, Mz):
+    """Change of ``(domega2, domega3)`` in rolling when ``(M_y, M_z)`` grow by ``(My, Mz)``
+    (the 2x2 system of (9)_2,3 in :func:`_rolling_solve`)."""
+    a11 = 1.5  # k2 + 1
+    a22 = k1 + ht * ht
+    det = a11 * a22 - ht * ht
+    Meta = c * My + s * Mz
+    Mzeta = -s * My + c * Mz
+    return (Meta * a22 + ht * Mzeta) / det, (a11 * Mzeta + ht * Meta) / det
+
+
+def _rolling_roll_stuck_solve(h, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z,
+                              pivot_stuck):
+    """Rolling with the rolling resistance stuck: :func:`_rolling_solve` with the extra
+    horizontal moment ``(M_hx, M_hy)`` that holds ``d omega_h/dt = 0`` (and, if
+    ``pivot_stuck``, the vertical ``M_piv`` that holds ``d omega_z/dt = 0``).
+    ``d omega1/dt`` depends on ``M_x`` alone (numerator of (9)_1), so ``M_hx`` cancels it;
+    then ``F_z = 1 + z_P omega1^2`` (eq. 11), and ``(M_hy, M_piv)`` follow from the 2x2
+    system of (9)_2,3.  Returns ``(dw1, dw2, dw3, F_x, F_y, F_z, M_hx, M_hy, M_piv)``."""
+    d1, d2, d3, F_x, F_y, F_z = _rolling_solve(h, theta, w1, w2, w3,
+                                               M0x, M0y, M0z, M1x, M1y, M1z)
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    k1 = _inertia(h)[0]
+    D1 = k1 + z_P * z_P + y_P * y_P + y_P * M1x  # d d1 / d M_x = 1/D1
+    Lx = -d1 * D1
+    dFz = y_P * d1  # F_z = 1 + z_P w1^2 - y_P d1 (eq. 11), d1 -> 0
+    F_z = F_z + dFz
+    F_y = F_y - z_P * d1
+    e2, e3 = _rolling_response(ht, s, c, k1, M1y * dFz, M1z * dFz)
+    d2 += e2
+    d3 += e3
+    r2y, r3y = _rolling_response(ht, s, c, k1, 1.0, 0.0)
+    r2z, r3z = _rolling_response(ht, s, c, k1, 0.0, 1.0)
+    Ly, Lz = _hold_h(theta, w1, w2, w3, d2, d3, r2y, r3y, r2z, r3z, pivot_stuck)
+    d2 += r2y * Ly + r2z * Lz
+    d3 += r3y * Ly + r3z * Lz
+    Om = w3 / c
+    F_x = d2 - ht * d3 - w1 * z_P * Om  # eq. (8)_1
+    return 0.0, d2, d3, F_x, F_y, F_z, Lx, Ly, Lz
+
+
+def _sliding_roll_stuck_solve(h, mu, e_x, e_y, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y,
+                              M1z, pivot_stuck):
+    """Sliding with the rolling resistance stuck: :func:`_sliding_solve` with the extra
+    ``(M_hx, M_hy)`` (and ``M_piv`` if ``pivot_stuck``) that hold ``omega_h`` (and
+    ``omega_z``).  ``d omega1/dt`` depends on ``M_x`` alone, ``M_hx`` cancels it; ``F_z``
+    (eq. 11), ``F_t = -mu F_z e`` follow; ``(domega2, domega3)`` respond to ``M_y``,
+    ``M_z`` by ``(c, -s)/(k2, k1)``, ``(s, c)/(k2, k1)``.  Returns ``(dw1, dw2, dw3, F_x,
+    F_y, F_z, M_hx, M_hy, M_piv)``."""
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    k1 = _inertia(h)[0]
+    k2 = 0.5
+    G1 = (k2 * w2 - k1 * w3 * p) * w3
+    G3 = (-k2 * w2 + k1 * w3 * p) * w1
+    q = mu * z_P * e_y + y_P + M1x
+    Lx = -(G1 + M0x + q * (1.0 + z_P * w1 * w1))  # numerator of d1 in _sliding_solve
+    F_z = 1.0 + z_P * w1 * w1  # eq. (11) with d1 = 0
+    F_x = -mu * F_z * e_x
+    F_y = -mu * F_z * e_y
+    My = M0y + F_z * M1y
+    Mz = M0z + F_z * M1z
+    d2 = (-F_x + c * My + s * Mz) / k2  # eq. (9)_2
+    d3 = (G3 + ht * F_x - s * My + c * Mz) / k1  # eq. (9)_3
+    r2y, r3y = c / k2, -s / k1
+    r2z, r3z = s / k2, c / k1
+    Ly, Lz = _hold_h(theta, w1, w2, w3, d2, d3, r2y, r3y, r2z, r3z, pivot_stuck)
+    return (0.0, d2 + r2y * Ly + r2z * Lz, d3 + r3y * Ly + r3z * Lz, F_x, F_y, F_z, Lx, Ly,
+            Lz)
+
+
+def _coulomb_rolling_full(h, c_roll, c_pivot, c_air, y, sz, rr_X, rr_Y, w_eps, roll_stuck):
+    """Rolling mode with pivot state ``sz`` (+1, -1: moment ``-c F_z sz``; 0: stuck) and
+    rolling-resistance state (``roll_stuck``, else the direction of :func:`_roll_direction`
+    with reference ``rr``): ``(dy[0:10], F_x, F_y, F_z, P_roll, P_pivot, P_air, M_piv,
+    M_hx, M_hy)``, the powers ``omega . M`` of each moment (0 while stuck, up to the
+    integration error of ``omega_h = 0``, ``omega_z = 0``)."""
+    psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    wx, wy, e_x, e_y = _roll_direction(theta, psi, w1, w2, w3, rr_X, rr_Y, w_eps)
+    M = _mode_moments(c_roll, c_pivot, c_air, theta, e_x, e_y, w3, sz, roll_stuck)
+    if roll_stuck:
+        d1, d2, d3, F_x, F_y, F_z, Lx, Ly, L = _rolling_roll_stuck_solve(
+            h, theta, w1, w2, w3, *M, sz == 0.0)
+    else:
+        if sz == 0.0:
+            d1, d2, d3, F_x, F_y, F_z, L = _rolling_stuck_solve(h, theta, w1, w2, w3, *M)
+        else:
+            d1, d2, d3, F_x, F_y, F_z = _rolling_solve(h, theta, w1, w2, w3, *M)
+            L = M[5] * F_z
+        Lx = M[3] * F_z
+        Ly = M[4] * F_z
+    cp = np.cos(psi)
+    sp = np.sin(psi)
+    v_Cx = w2 - ht * w3  # eq. (37)
+    v_Cy = w1 * z_P
+    P3 = _coulomb_powers(0.0, 0.0, c_air, theta, w1, w2, w3, F_z)[2]
+    dy = (v_Cx * cp - v_Cy * sp, v_Cx * sp + v_Cy * cp,  # eq. (1)
+          F_x * cp - F_y * sp, F_x * sp + F_y * cp,  # eq. (8), inertial components
+          w3 / c, w1, w2 - w3 * p, d1, d2, d3)  # eq. (2)
+    return dy, F_x, F_y, F_z, wx * Lx + wy * Ly, _omega_z(theta, w2, w3) * L, P3, L, Lx, Ly
+
+
+def _coulomb_sliding_full(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_eps, sz, rr_X,
+                          rr_Y, w_eps, roll_stuck):
+    """Sliding mode (friction direction as :func:`_coulomb_sliding`) with the pivot and
+    rolling-resistance states of :func:`_coulomb_rolling_full`: ``(dy[0:10], F_x, F_y,
+    F_z, P_slip, P_roll, P_pivot, P_air, M_piv, M_hx, M_hy)``."""
+    psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    u_x, u_y, e_x, e_y = _friction_direction(h, y, ref_X, ref_Y, u_eps)
+    wx, wy, r_x, r_y = _roll_direction(theta, psi, w1, w2, w3, rr_X, rr_Y, w_eps)
+    M = _mode_moments(c_roll, c_pivot, c_air, theta, r_x, r_y, w3, sz, roll_stuck)
+    if roll_stuck:
+        d1, d2, d3, F_x, F_y, F_z, Lx, Ly, L = _sliding_roll_stuck_solve(
+            h, mu_k, e_x, e_y, theta, w1, w2, w3, *M, sz == 0.0)
+    else:
+        if sz == 0.0:
+            d1, d2, d3, F_x, F_y, F_z, L = _sliding_stuck_solve(h, mu_k, e_x, e_y, theta,
+                                                                w1, w2, w3, *M)
+        else:
+            d1, d2, d3, F_x, F_y, F_z = _sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3,
+                                                       *M)
+            L = M[5] * F_z
+        Lx = M[3] * F_z
+        Ly = M[4] * F_z
+    cp = np.cos(psi)
+    sp = np.sin(psi)
+    P3 = _coulomb_powers(0.0, 0.0, c_air, theta, w1, w2, w3, F_z)[2]
+    dy = (y[2], y[3],  # eq. (1)
+          F_x * cp - F_y * sp, F_x * sp + F_y * cp,  # eq. (8), inertial components
+          w3 / c, w1, w2 - w3 * p, d1, d2, d3)  # eq. (2)
+    return (dy, F_x, F_y, F_z, F_x * u_x + F_y * u_y, wx * Lx + wy * Ly,
+            _omega_z(theta, w2, w3) * L, P3, L, Lx, Ly)
 
 
 # ------------------------------------------------------------------- public wrappers
