@@ -258,52 +258,6 @@ def _pivot_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3, sz):
     return M0x, M0y, M0z, M1x, M1y, -c_pivot * sz
 
 
-def _coulomb_rolling_pivot(h, c_roll, c_pivot, c_air, y, sz):
-    """Rolling mode with pivot state ``sz`` (+1, -1: moment ``-c F_z sz``; 0: stuck):
-    ``(dy[0:10], F_x, F_y, F_z, P_roll, P_pivot, P_air, M_piv)``, ``M_piv`` the pivot
-    moment about the vertical and ``P_pivot = omega_z M_piv`` its power (0 while stuck)."""
-    psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
-    ht, s, c, p, y_P, z_P = _geometry(h, theta)
-    M = _pivot_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3, sz)
-    if sz == 0.0:
-        d1, d2, d3, F_x, F_y, F_z, L = _rolling_stuck_solve(h, theta, w1, w2, w3, *M)
-    else:
-        d1, d2, d3, F_x, F_y, F_z = _rolling_solve(h, theta, w1, w2, w3, *M)
-        L = M[5] * F_z
-    cp = np.cos(psi)
-    sp = np.sin(psi)
-    v_Cx = w2 - ht * w3  # eq. (37)
-    v_Cy = w1 * z_P
-    P1, _, P3 = _coulomb_powers(c_roll, 0.0, c_air, theta, w1, w2, w3, F_z)
-    dy = (v_Cx * cp - v_Cy * sp, v_Cx * sp + v_Cy * cp,  # eq. (1)
-          F_x * cp - F_y * sp, F_x * sp + F_y * cp,  # eq. (8), inertial components
-          w3 / c, w1, w2 - w3 * p, d1, d2, d3)  # eq. (2)
-    return dy, F_x, F_y, F_z, P1, _omega_z(theta, w2, w3) * L, P3, L
-
-
-def _coulomb_sliding_pivot(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_eps, sz):
-    """Sliding mode (friction direction as :func:`_coulomb_sliding`) with pivot state
-    ``sz``: ``(dy[0:10], F_x, F_y, F_z, P_slip, P_roll, P_pivot, P_air, M_piv)``."""
-    psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
-    ht, s, c, p, y_P, z_P = _geometry(h, theta)
-    u_x, u_y, e_x, e_y = _friction_direction(h, y, ref_X, ref_Y, u_eps)
-    M = _pivot_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3, sz)
-    if sz == 0.0:
-        d1, d2, d3, F_x, F_y, F_z, L = _sliding_stuck_solve(h, mu_k, e_x, e_y, theta,
-                                                            w1, w2, w3, *M)
-    else:
-        d1, d2, d3, F_x, F_y, F_z = _sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3, *M)
-        L = M[5] * F_z
-    cp = np.cos(psi)
-    sp = np.sin(psi)
-    P1, _, P3 = _coulomb_powers(c_roll, 0.0, c_air, theta, w1, w2, w3, F_z)
-    dy = (y[2], y[3],  # eq. (1)
-          F_x * cp - F_y * sp, F_x * sp + F_y * cp,  # eq. (8), inertial components
-          w3 / c, w1, w2 - w3 * p, d1, d2, d3)  # eq. (2)
-    return (dy, F_x, F_y, F_z, F_x * u_x + F_y * u_y, P1, _omega_z(theta, w2, w3) * L, P3,
-            L)
-
-
 # ----------------------------------------------------- set-valued rolling resistance
 # The rolling-resistance moment -c F_z omega_h/|omega_h| is set-valued at omega_h = 0: there
 # it is whatever keeps omega_h = 0, as long as |M_h| <= c F_z ("roll stuck",
@@ -441,7 +395,7 @@ def _coulomb_rolling_full(h, c_roll, c_pivot, c_air, y, sz, rr_X, rr_Y, w_eps, r
     M = _mode_moments(c_roll, c_pivot, c_air, theta, e_x, e_y, w3, sz, roll_stuck)
     if roll_stuck:
         d1, d2, d3, F_x, F_y, F_z, Lx, Ly, L = _rolling_roll_stuck_solve(
-            h, theta, w1, w2, w3, *M, sz == 0.0)
+            h, theta, w1, w2, w3, M[0], M[1], M[2], M[3], M[4], M[5], sz == 0.0)
     else:
         if sz == 0.0:
             d1, d2, d3, F_x, F_y, F_z, L = _rolling_stuck_solve(h, theta, w1, w2, w3, *M)
@@ -473,7 +427,8 @@ def _coulomb_sliding_full(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_ep
     M = _mode_moments(c_roll, c_pivot, c_air, theta, r_x, r_y, w3, sz, roll_stuck)
     if roll_stuck:
         d1, d2, d3, F_x, F_y, F_z, Lx, Ly, L = _sliding_roll_stuck_solve(
-            h, mu_k, e_x, e_y, theta, w1, w2, w3, *M, sz == 0.0)
+            h, mu_k, e_x, e_y, theta, w1, w2, w3, M[0], M[1], M[2], M[3], M[4], M[5],
+            sz == 0.0)
     else:
         if sz == 0.0:
             d1, d2, d3, F_x, F_y, F_z, L = _sliding_stuck_solve(h, mu_k, e_x, e_y, theta,
@@ -523,13 +478,19 @@ def coulomb_rhs(disk: Disk, ground, mode, y, slip_reference=None) -> np.ndarray:
     ----------
     disk : Disk
     ground : Coulomb
-    mode : {"rolling", "sliding", "rolling, pivot stuck", "sliding, pivot stuck"}
-        Rolling: no slip, the contact force follows from the constraint (eqs. 8, 9, 11, 37)
-        with the contact moments of ``ground``; ``X_C, Y_C`` move with the no-slip velocity.
-        Sliding: ``F_t = -mu_k F_z u/|u|`` (``u`` from eq. 6), ``F_z`` from eq. (11).
-        "pivot stuck": the pivoting-friction moment is the one that holds the vertical spin
-        ``omega_z`` constant (``d omega_z/dt = 0``; it sticks at ``omega_z = 0``), derived in
-        :func:`rollingdisk.symbolic.coulomb.derive_pivot_stuck`, whatever its size.
+    mode : str or int
+        A name of :data:`MODE_NAMES` (or its code).  Rolling: no slip, the contact force
+        follows from the constraint (eqs. 8, 9, 11, 37) with the contact moments of
+        ``ground``; ``X_C, Y_C`` move with the no-slip velocity.  Sliding: ``F_t = -mu_k
+        F_z u/|u|`` (``u`` from eq. 6), ``F_z`` from eq. (11).  "pivot stuck": the
+        pivoting-friction moment is the one that holds the vertical spin ``omega_z``
+        constant (``d omega_z/dt = 0``; it sticks at ``omega_z = 0``), derived in
+        :func:`rollingdisk.symbolic.coulomb.derive_pivot_stuck`, whatever its size.  "roll
+        stuck": the rolling-resistance moment is the horizontal one that holds ``omega_h``
+        constant (it sticks at ``omega_h = 0``), derived in
+        :func:`rollingdisk.symbolic.coulomb.derive_roll_stuck`, whatever its size.
+        Outside the stuck modes the moments are ``-c F_z omega_h/|omega_h|`` (0 at
+        ``omega_h = 0``) and ``-c F_z sgn(omega_z)``.
     y : array_like, shape (10,)
     slip_reference : (float, float), optional
         Sliding only: the inertial direction used when ``u = 0`` (default: ``(1, 0)``).
@@ -541,20 +502,30 @@ def coulomb_rhs(disk: Disk, ground, mode, y, slip_reference=None) -> np.ndarray:
     _check_disk(disk)
     g = _check_coulomb(ground)
     y = _as_state("smooth", y)
+    return np.array(_mode_solve(disk.h, g, _check_mode(mode), y, slip_reference)[0])
+
+
+def _mode_solve(h, g, code, y, slip_reference=None):
+    """The kernel of mode ``code`` at ``y`` for the public functions: ``(dy, F_x, F_y, F_z,
+    P_slip, P_roll, P_pivot, P_air, M_piv, M_hx, M_hy)``; free moments along
+    ``omega_h/|omega_h|`` and ``sgn(omega_z)`` (none where these vanish)."""
     cr, cpv, ca = g.coefficients
-    code = _check_mode(mode)
-    if code == ROLLING:
-        return np.array(_coulomb_rolling(disk.h, cr, cpv, ca, y)[0])
-    if code == ROLLING_PIVOT_STUCK:
-        return np.array(_coulomb_rolling_pivot(disk.h, cr, cpv, ca, y, 0.0)[0])
+    sz = 0.0
+    if not code & PIVOT_STUCK:
+        sz = float(np.sign(_omega_z(y[5], y[8], y[9])))
+        if sz == 0.0:  # sgn(0) = 0: no pivot moment
+            sz, cpv = 1.0, 0.0
+    rs = bool(code & ROLL_STUCK)
+    if code & 1 == ROLLING:
+        dy, F_x, F_y, F_z, P1, P2, P3, L, Lx, Ly = _coulomb_rolling_full(
+            h, cr, cpv, ca, y, sz, 0.0, 0.0, 0.0, rs)
+        return dy, F_x, F_y, F_z, 0.0, P1, P2, P3, L, Lx, Ly
+    u = _slip_velocity(h, y)
     rx, ry = (1.0, 0.0) if slip_reference is None else slip_reference
-    u = _slip_velocity(disk.h, y)
     if slip_reference is None and (u[0] or u[1]):
         rx, ry = _to_inertial(y[4], *u)
-    if code == SLIDING_PIVOT_STUCK:
-        return np.array(_coulomb_sliding_pivot(disk.h, g.mu_k, cr, cpv, ca, y, rx, ry, 0.0,
-                                               0.0)[0])
-    return np.array(_coulomb_sliding(disk.h, g.mu_k, cr, cpv, ca, y, rx, ry)[0])
+    return _coulomb_sliding_full(h, g.mu_k, cr, cpv, ca, y, rx, ry, 0.0, sz, 0.0, 0.0, 0.0,
+                                 rs)
 
 
 def _to_inertial(psi, ax, ay):
@@ -571,29 +542,23 @@ def coulomb_contact(disk: Disk, ground, mode, y) -> dict:
         ``F_x, F_y, F_z`` (contact force in Cxyz, units ``m g``), ``F_t = |(F_x, F_y)|``,
         ``u_x, u_y`` (slip velocity, eq. 6), ``power_slip`` (``v_P . F_t``), and the
         powers ``power_rolling_resistance``, ``power_pivot``, ``power_air`` (``omega . M``
-        of each moment; all powers ``<= 0``, eq. 14), and ``M_pivot``, the pivoting-friction
+        of each moment; all powers ``<= 0``, eq. 14), ``M_pivot``, the pivoting-friction
         moment about the vertical (``-c F_z sgn(omega_z)``; in a "pivot stuck" mode the
-        moment that holds ``omega_z``, ``|M_pivot| <= c F_z`` while the pivot sticks).
+        moment that holds ``omega_z``, ``|M_pivot| <= c F_z`` while the pivot sticks), and
+        ``M_roll_x, M_roll_y``, the rolling-resistance moment in Cxyz (``-c F_z
+        omega_h/|omega_h|``; in a "roll stuck" mode the moment that holds ``omega_h``,
+        ``|M_roll| <= c F_z`` while it sticks), units ``m g a``.
     """
     _check_disk(disk)
     g = _check_coulomb(ground)
     y = _as_state("smooth", y)
-    cr, cpv, ca = g.coefficients
     u_x, u_y = _slip_velocity(disk.h, y)
     code = _check_mode(mode)
-    sz = 0.0 if code & PIVOT_STUCK else float(np.sign(_omega_z(y[5], y[8], y[9])))
-    if sz == 0.0 and not code & PIVOT_STUCK:  # sgn(0) = 0: no pivot moment (as the kernels)
-        sz, cpv = 1.0, 0.0
-    if code & 1 == ROLLING:
-        _, F_x, F_y, F_z, P1, P2, P3, L = _coulomb_rolling_pivot(disk.h, cr, cpv, ca, y, sz)
-        P0 = 0.0
-    else:
-        rx, ry = _to_inertial(y[4], u_x, u_y) if (u_x or u_y) else (1.0, 0.0)
-        _, F_x, F_y, F_z, P0, P1, P2, P3, L = _coulomb_sliding_pivot(
-            disk.h, g.mu_k, cr, cpv, ca, y, rx, ry, 0.0, sz)
+    _, F_x, F_y, F_z, P0, P1, P2, P3, L, Lx, Ly = _mode_solve(disk.h, g, code, y)
     return {"F_x": F_x, "F_y": F_y, "F_z": F_z, "F_t": float(np.hypot(F_x, F_y)),
             "u_x": u_x, "u_y": u_y, "power_slip": P0, "power_rolling_resistance": P1,
-            "power_pivot": P2, "power_air": P3, "M_pivot": L}
+            "power_pivot": P2, "power_air": P3, "M_pivot": L, "M_roll_x": Lx,
+            "M_roll_y": Ly}
 
 
 def coulomb_energy(disk: Disk, y):
