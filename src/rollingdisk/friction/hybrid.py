@@ -17,6 +17,15 @@ The disk is in one of two modes (:mod:`rollingdisk.friction.coulomb`):
     (set-valued: ``|M_z| <= c F_z``, issue 22).  Entered when ``omega_z`` reaches 0 (event
     ``sz omega_z``, ``sz`` its sign on the segment) and the moment that holds it fits in
     ``c F_z``; left when that moment reaches ``c F_z`` (event ``c F_z - |M_piv|``).
+``..., roll stuck``
+    any of these with the horizontal angular velocity ``omega_h`` held at 0 by the rolling
+    resistance (set-valued: ``|M_h| <= c F_z``).  Outside it the moment is ``-c F_z
+    sgn(omega_h . rref) omega_h/|omega_h|``, ``rref`` the direction of ``omega_h`` at the
+    last step; at a zero of ``omega_h . rref`` with ``omega_h`` at rest (within
+    :data:`STICK_TOL`) it sticks if the moment that holds it fits in ``c F_z``, else the
+    moment flips; with ``omega_h`` not at rest ``rref`` is renewed.  Left when the holding
+    moment reaches ``c F_z`` (event ``c F_z - |M_h|``).  Both paths (scipy, compiled) run
+    every mode.
 
 Terminal guards as on the ideal grounds: lift-off (``F_z = 0``, eq. 11), edge contact
 (``theta = 0`` with ``h > 0``), fell flat (``|theta| = pi/2``).
