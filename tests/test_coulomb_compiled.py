@@ -127,10 +127,10 @@ def _random_state(rng):
     return y
 
 
-@pytest.mark.parametrize("mode", range(4))
+@pytest.mark.parametrize("mode", range(8))
 def test_compiled_rhs_and_events_equal_the_python_kernels(ns, mode):
     """fastsegment's _rhs and _cc_events (compiled) against _Run.rhs and _Run.events (the
-    Python kernels of coulomb.py), at random states, in each of the 4 modes."""
+    Python kernels of coulomb.py), at random states, in each of the 8 modes."""
     rng = np.random.default_rng(7 + mode)
     for _ in range(20):
         disk = rd.Disk(float(rng.choice([0.0, 0.25])))
@@ -139,18 +139,20 @@ def test_compiled_rhs_and_events_equal_the_python_kernels(ns, mode):
         run = hy._Run(disk, g, alpha_min=1e-3)
         run.ref = (0.6, -0.8)
         run.sz = float(rng.choice([-1.0, 1.0]))
+        a = rng.uniform(0, 2 * math.pi)
+        run.rref = (math.cos(a), math.sin(a))
         run.side = 1.0 if y[5] >= 0 else -1.0
         want = run.rhs(mode)(0.0, y)
         c_roll, c_pivot, c_air = g.coefficients
         p = np.array([mode, g.mu_k, g.mu_s, c_roll, c_pivot, c_air, *run.ref, hy.U_EPS,
-                      run.sz, run.side, run.alpha_min])
+                      run.sz, run.side, run.alpha_min, *run.rref, hy.W_EPS])
         got = np.empty(14)
         ns["_rhs"](p, disk.h, y, got)
         assert np.allclose(got, want, rtol=1e-12, atol=1e-12)
         K = np.zeros((14, 3))
         ns["_rhs_col"](p, disk.h, y, K, 1)
         assert np.array_equal(K[:, 1], got)
-        ev = np.empty(5)
+        ev = np.empty(6)
         ns["_cc_events"](p, disk.h, y, ev)
         assert np.allclose(ev, run.events(mode, y), rtol=1e-12, atol=1e-12)
 
@@ -161,8 +163,9 @@ def test_uncompiled_loop_takes_the_compiled_steps(ns):
     assert fs.matches_python(ns)
     disk = rd.Disk(0.0)  # Coulomb(0.2): mu_k = mu_s = 0.2 in p0
     y0 = np.array([0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=float)
-    p0 = np.array([1, 0.2, 0.2, 0, 0, 0, 1.0, 0.0, hy.U_EPS, 1.0, 1.0, 1e-8])
-    active = np.array([True, False, True, False, True])
+    p0 = np.array([1, 0.2, 0.2, 0, 0, 0, 1.0, 0.0, hy.U_EPS, 1.0, 1.0, 1e-8, 0.0, 0.0,
+                   hy.W_EPS])
+    active = np.array([True, False, True, False, True, False])
     out = []
     for space in (ns, py):
         ts, zs = np.empty(4), np.empty((4, 14))

@@ -118,7 +118,8 @@ def configure(sub):
                    help="write the trajectory as CSV (t, X_C, Y_C, psi, theta, phi, omega1, "
                    "omega2, omega3, X_P, Y_P, F_x, F_y, F_z, E; smooth and coulomb ground "
                    "add V_X, V_Y; coulomb ground adds mode: 0 rolling, 1 sliding, 2 and 3 the same "
-                   "with the pivot stuck); the "
+                   "with the pivot stuck, 4-7 the first four with the rolling resistance "
+                   "stuck); the "
                    "first line names the columns; in the paper's units, or for a disk with "
                    "a physical size in SI units (forces and energies only with --mass) with "
                    "a second line '# t [s],X_C [m],...' naming each column's unit")

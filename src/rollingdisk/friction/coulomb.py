@@ -33,14 +33,20 @@ COULOMB_STATE = SMOOTH_STATE
 
 #: Integer codes of the modes of a Coulomb run (``Trajectory.mode``): the contact rolls or
 #: slides (bit 0); bit 1 (:data:`PIVOT_STUCK`) is set while the pivot sticks, the vertical
-#: spin ``omega_z`` held at 0 by the pivoting-friction moment (issue 22).
+#: spin ``omega_z`` held at 0 by the pivoting-friction moment (issue 22); bit 2
+#: (:data:`ROLL_STUCK`) while the rolling resistance sticks, the horizontal angular velocity
+#: ``omega_h`` held at 0 by the rolling-resistance moment.
 ROLLING, SLIDING = 0, 1
 PIVOT_STUCK = 2
 ROLLING_PIVOT_STUCK, SLIDING_PIVOT_STUCK = ROLLING | PIVOT_STUCK, SLIDING | PIVOT_STUCK
+ROLL_STUCK = 4
 
 
-#: Mode code -> name (codes 0, 1 as before; 2, 3 the pivot-stuck sub-modes).
-MODE_NAMES = ("rolling", "sliding", "rolling, pivot stuck", "sliding, pivot stuck")
+#: Mode code -> name (codes 0, 1 as before; 2, 3 the pivot-stuck sub-modes; 4-7 the same
+#: four with the rolling resistance stuck).
+MODE_NAMES = ("rolling", "sliding", "rolling, pivot stuck", "sliding, pivot stuck",
+              "rolling, roll stuck", "sliding, roll stuck", "rolling, pivot stuck, roll stuck",
+              "sliding, pivot stuck, roll stuck")
 
 
 def _rolling_solve(h, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z):
@@ -252,50 +258,195 @@ def _pivot_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3, sz):
     return M0x, M0y, M0z, M1x, M1y, -c_pivot * sz
 
 
-def _coulomb_rolling_pivot(h, c_roll, c_pivot, c_air, y, sz):
-    """Rolling mode with pivot state ``sz`` (+1, -1: moment ``-c F_z sz``; 0: stuck):
-    ``(dy[0:10], F_x, F_y, F_z, P_roll, P_pivot, P_air, M_piv)``, ``M_piv`` the pivot
-    moment about the vertical and ``P_pivot = omega_z M_piv`` its power (0 while stuck)."""
+# ----------------------------------------------------- set-valued rolling resistance
+# The rolling-resistance moment -c F_z omega_h/|omega_h| is set-valued at omega_h = 0: there
+# it is whatever keeps omega_h = 0, as long as |M_h| <= c F_z ("roll stuck",
+# rollingdisk.symbolic.coulomb.derive_roll_stuck).  Outside it the kernels take an inertial
+# reference direction ``rr`` (the direction of omega_h when the step began) and use the
+# direction sgn(omega_h . rr) omega_h/|omega_h| (``rr`` itself where |omega_h| <= w_eps): the
+# smooth continuation through omega_h = 0, on which the hybrid driver locates the zero, as
+# the slip reference does for sliding.
+def _roll_direction(theta, psi, w1, w2, w3, rr_X, rr_Y, w_eps):
+    """``(omega_x, omega_y, e_x, e_y)``: the horizontal angular velocity and the direction
+    ``e`` (Cxyz) of the rolling-resistance moment ``-c F_z e``: ``sgn(omega_h . rr)
+    omega_h/|omega_h|``, or ``rr`` (inertial, turned into Cxyz) where ``|omega_h| <=
+    w_eps``."""
+    wx = w1
+    wy = w2 * np.cos(theta) - w3 * np.sin(theta)
+    cp = np.cos(psi)
+    sp = np.sin(psi)
+    r_x = rr_X * cp + rr_Y * sp
+    r_y = -rr_X * sp + rr_Y * cp
+    n = np.sqrt(wx * wx + wy * wy)
+    if n > w_eps and n > 0.0:
+        sig = 1.0
+        if wx * r_x + wy * r_y < 0.0:
+            sig = -1.0
+        return wx, wy, sig * wx / n, sig * wy / n
+    return wx, wy, r_x, r_y
+
+
+def _mode_moments(c_roll, c_pivot, c_air, theta, e_x, e_y, w3, sz, roll_stuck):
+    """``M0, M1`` (Cxyz) of a mode: air, rolling resistance ``-c F_z e`` (none while
+    ``roll_stuck``: an unknown), pivot ``-c F_z sz`` (``sz = 0``: stuck, an unknown)."""
+    M0x, M0y, M0z, _, _, _ = _coulomb_moments(0.0, 0.0, c_air, theta, 0.0, 0.0, w3)
+    if roll_stuck:
+        return M0x, M0y, M0z, 0.0, 0.0, -c_pivot * sz
+    return M0x, M0y, M0z, -c_roll * e_x, -c_roll * e_y, -c_pivot * sz
+
+
+def _hold_h(theta, w1, w2, w3, d2, d3, r2y, r3y, r2z, r3z, pivot_stuck):
+    """The moments ``(M_hy, M_piv)`` that make ``d omega_y/dt = 0`` (and ``d omega_z/dt = 0``
+    if ``pivot_stuck``; else ``M_piv = 0``), when unit moments ``M_y``, ``M_z`` change
+    ``(domega2, domega3)`` by ``(r2y, r3y)``, ``(r2z, r3z)``."""
+    s = np.sin(theta)
+    c = np.cos(theta)
+    gy = d2 * c - d3 * s - w1 * (w2 * s + w3 * c)  # d omega_y/dt
+    ay = r2y * c - r3y * s
+    if not pivot_stuck:
+        return -gy / ay, 0.0
+    gz = d2 * s + d3 * c + w1 * (w2 * c - w3 * s)  # d omega_z/dt
+    az = r2z * c - r3z * s
+    by = r2y * s + r3y * c
+    bz = r2z * s + r3z * c
+    det = ay * bz - az * by
+    return (az * gz - gy * bz) / det, (gy * by - ay * gz) / det
+
+
+def _rolling_response(ht, s, c, k1, My, Mz):
+    """Change of ``(domega2, domega3)`` in rolling when ``(M_y, M_z)`` grow by ``(My, Mz)``
+    (the 2x2 system of (9)_2,3 in :func:`_rolling_solve`)."""
+    a11 = 1.5  # k2 + 1
+    a22 = k1 + ht * ht
+    det = a11 * a22 - ht * ht
+    Meta = c * My + s * Mz
+    Mzeta = -s * My + c * Mz
+    return (Meta * a22 + ht * Mzeta) / det, (a11 * Mzeta + ht * Meta) / det
+
+
+def _rolling_roll_stuck_solve(h, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y, M1z,
+                              pivot_stuck):
+    """Rolling with the rolling resistance stuck: :func:`_rolling_solve` with the extra
+    horizontal moment ``(M_hx, M_hy)`` that holds ``d omega_h/dt = 0`` (and, if
+    ``pivot_stuck``, the vertical ``M_piv`` that holds ``d omega_z/dt = 0``).
+    ``d omega1/dt`` depends on ``M_x`` alone (numerator of (9)_1), so ``M_hx`` cancels it;
+    then ``F_z = 1 + z_P omega1^2`` (eq. 11), and ``(M_hy, M_piv)`` follow from the 2x2
+    system of (9)_2,3.  Returns ``(dw1, dw2, dw3, F_x, F_y, F_z, M_hx, M_hy, M_piv)``."""
+    d1, d2, d3, F_x, F_y, F_z = _rolling_solve(h, theta, w1, w2, w3,
+                                               M0x, M0y, M0z, M1x, M1y, M1z)
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    k1 = _inertia(h)[0]
+    D1 = k1 + z_P * z_P + y_P * y_P + y_P * M1x  # d d1 / d M_x = 1/D1
+    Lx = -d1 * D1
+    dFz = y_P * d1  # F_z = 1 + z_P w1^2 - y_P d1 (eq. 11), d1 -> 0
+    F_z = F_z + dFz
+    F_y = F_y - z_P * d1
+    e2, e3 = _rolling_response(ht, s, c, k1, M1y * dFz, M1z * dFz)
+    d2 += e2
+    d3 += e3
+    r2y, r3y = _rolling_response(ht, s, c, k1, 1.0, 0.0)
+    r2z, r3z = _rolling_response(ht, s, c, k1, 0.0, 1.0)
+    Ly, Lz = _hold_h(theta, w1, w2, w3, d2, d3, r2y, r3y, r2z, r3z, pivot_stuck)
+    d2 += r2y * Ly + r2z * Lz
+    d3 += r3y * Ly + r3z * Lz
+    Om = w3 / c
+    F_x = d2 - ht * d3 - w1 * z_P * Om  # eq. (8)_1
+    return 0.0, d2, d3, F_x, F_y, F_z, Lx, Ly, Lz
+
+
+def _sliding_roll_stuck_solve(h, mu, e_x, e_y, theta, w1, w2, w3, M0x, M0y, M0z, M1x, M1y,
+                              M1z, pivot_stuck):
+    """Sliding with the rolling resistance stuck: :func:`_sliding_solve` with the extra
+    ``(M_hx, M_hy)`` (and ``M_piv`` if ``pivot_stuck``) that hold ``omega_h`` (and
+    ``omega_z``).  ``d omega1/dt`` depends on ``M_x`` alone, ``M_hx`` cancels it; ``F_z``
+    (eq. 11), ``F_t = -mu F_z e`` follow; ``(domega2, domega3)`` respond to ``M_y``,
+    ``M_z`` by ``(c, -s)/(k2, k1)``, ``(s, c)/(k2, k1)``.  Returns ``(dw1, dw2, dw3, F_x,
+    F_y, F_z, M_hx, M_hy, M_piv)``."""
+    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    k1 = _inertia(h)[0]
+    k2 = 0.5
+    G1 = (k2 * w2 - k1 * w3 * p) * w3
+    G3 = (-k2 * w2 + k1 * w3 * p) * w1
+    q = mu * z_P * e_y + y_P + M1x
+    Lx = -(G1 + M0x + q * (1.0 + z_P * w1 * w1))  # numerator of d1 in _sliding_solve
+    F_z = 1.0 + z_P * w1 * w1  # eq. (11) with d1 = 0
+    F_x = -mu * F_z * e_x
+    F_y = -mu * F_z * e_y
+    My = M0y + F_z * M1y
+    Mz = M0z + F_z * M1z
+    d2 = (-F_x + c * My + s * Mz) / k2  # eq. (9)_2
+    d3 = (G3 + ht * F_x - s * My + c * Mz) / k1  # eq. (9)_3
+    r2y, r3y = c / k2, -s / k1
+    r2z, r3z = s / k2, c / k1
+    Ly, Lz = _hold_h(theta, w1, w2, w3, d2, d3, r2y, r3y, r2z, r3z, pivot_stuck)
+    return (0.0, d2 + r2y * Ly + r2z * Lz, d3 + r3y * Ly + r3z * Lz, F_x, F_y, F_z, Lx, Ly,
+            Lz)
+
+
+def _coulomb_rolling_full(h, c_roll, c_pivot, c_air, y, sz, rr_X, rr_Y, w_eps, roll_stuck):
+    """Rolling mode with pivot state ``sz`` (+1, -1: moment ``-c F_z sz``; 0: stuck) and
+    rolling-resistance state (``roll_stuck``, else the direction of :func:`_roll_direction`
+    with reference ``rr``): ``(dy[0:10], F_x, F_y, F_z, P_roll, P_pivot, P_air, M_piv,
+    M_hx, M_hy)``, the powers ``omega . M`` of each moment (0 while stuck, up to the
+    integration error of ``omega_h = 0``, ``omega_z = 0``)."""
     psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
-    M = _pivot_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3, sz)
-    if sz == 0.0:
-        d1, d2, d3, F_x, F_y, F_z, L = _rolling_stuck_solve(h, theta, w1, w2, w3, *M)
+    wx, wy, e_x, e_y = _roll_direction(theta, psi, w1, w2, w3, rr_X, rr_Y, w_eps)
+    M = _mode_moments(c_roll, c_pivot, c_air, theta, e_x, e_y, w3, sz, roll_stuck)
+    if roll_stuck:
+        d1, d2, d3, F_x, F_y, F_z, Lx, Ly, L = _rolling_roll_stuck_solve(
+            h, theta, w1, w2, w3, M[0], M[1], M[2], M[3], M[4], M[5], sz == 0.0)
     else:
-        d1, d2, d3, F_x, F_y, F_z = _rolling_solve(h, theta, w1, w2, w3, *M)
-        L = M[5] * F_z
+        if sz == 0.0:
+            d1, d2, d3, F_x, F_y, F_z, L = _rolling_stuck_solve(h, theta, w1, w2, w3, *M)
+        else:
+            d1, d2, d3, F_x, F_y, F_z = _rolling_solve(h, theta, w1, w2, w3, *M)
+            L = M[5] * F_z
+        Lx = M[3] * F_z
+        Ly = M[4] * F_z
     cp = np.cos(psi)
     sp = np.sin(psi)
     v_Cx = w2 - ht * w3  # eq. (37)
     v_Cy = w1 * z_P
-    P1, _, P3 = _coulomb_powers(c_roll, 0.0, c_air, theta, w1, w2, w3, F_z)
+    P3 = _coulomb_powers(0.0, 0.0, c_air, theta, w1, w2, w3, F_z)[2]
     dy = (v_Cx * cp - v_Cy * sp, v_Cx * sp + v_Cy * cp,  # eq. (1)
           F_x * cp - F_y * sp, F_x * sp + F_y * cp,  # eq. (8), inertial components
           w3 / c, w1, w2 - w3 * p, d1, d2, d3)  # eq. (2)
-    return dy, F_x, F_y, F_z, P1, _omega_z(theta, w2, w3) * L, P3, L
+    return dy, F_x, F_y, F_z, wx * Lx + wy * Ly, _omega_z(theta, w2, w3) * L, P3, L, Lx, Ly
 
 
-def _coulomb_sliding_pivot(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_eps, sz):
-    """Sliding mode (friction direction as :func:`_coulomb_sliding`) with pivot state
-    ``sz``: ``(dy[0:10], F_x, F_y, F_z, P_slip, P_roll, P_pivot, P_air, M_piv)``."""
+def _coulomb_sliding_full(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_eps, sz, rr_X,
+                          rr_Y, w_eps, roll_stuck):
+    """Sliding mode (friction direction as :func:`_coulomb_sliding`) with the pivot and
+    rolling-resistance states of :func:`_coulomb_rolling_full`: ``(dy[0:10], F_x, F_y,
+    F_z, P_slip, P_roll, P_pivot, P_air, M_piv, M_hx, M_hy)``."""
     psi, theta, w1, w2, w3 = y[4], y[5], y[7], y[8], y[9]
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
     u_x, u_y, e_x, e_y = _friction_direction(h, y, ref_X, ref_Y, u_eps)
-    M = _pivot_moments(c_roll, c_pivot, c_air, theta, w1, w2, w3, sz)
-    if sz == 0.0:
-        d1, d2, d3, F_x, F_y, F_z, L = _sliding_stuck_solve(h, mu_k, e_x, e_y, theta,
-                                                            w1, w2, w3, *M)
+    wx, wy, r_x, r_y = _roll_direction(theta, psi, w1, w2, w3, rr_X, rr_Y, w_eps)
+    M = _mode_moments(c_roll, c_pivot, c_air, theta, r_x, r_y, w3, sz, roll_stuck)
+    if roll_stuck:
+        d1, d2, d3, F_x, F_y, F_z, Lx, Ly, L = _sliding_roll_stuck_solve(
+            h, mu_k, e_x, e_y, theta, w1, w2, w3, M[0], M[1], M[2], M[3], M[4], M[5],
+            sz == 0.0)
     else:
-        d1, d2, d3, F_x, F_y, F_z = _sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3, *M)
-        L = M[5] * F_z
+        if sz == 0.0:
+            d1, d2, d3, F_x, F_y, F_z, L = _sliding_stuck_solve(h, mu_k, e_x, e_y, theta,
+                                                                w1, w2, w3, *M)
+        else:
+            d1, d2, d3, F_x, F_y, F_z = _sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3,
+                                                       *M)
+            L = M[5] * F_z
+        Lx = M[3] * F_z
+        Ly = M[4] * F_z
     cp = np.cos(psi)
     sp = np.sin(psi)
-    P1, _, P3 = _coulomb_powers(c_roll, 0.0, c_air, theta, w1, w2, w3, F_z)
+    P3 = _coulomb_powers(0.0, 0.0, c_air, theta, w1, w2, w3, F_z)[2]
     dy = (y[2], y[3],  # eq. (1)
           F_x * cp - F_y * sp, F_x * sp + F_y * cp,  # eq. (8), inertial components
           w3 / c, w1, w2 - w3 * p, d1, d2, d3)  # eq. (2)
-    return (dy, F_x, F_y, F_z, F_x * u_x + F_y * u_y, P1, _omega_z(theta, w2, w3) * L, P3,
-            L)
+    return (dy, F_x, F_y, F_z, F_x * u_x + F_y * u_y, wx * Lx + wy * Ly,
+            _omega_z(theta, w2, w3) * L, P3, L, Lx, Ly)
 
 
 # ------------------------------------------------------------------- public wrappers
@@ -327,13 +478,19 @@ def coulomb_rhs(disk: Disk, ground, mode, y, slip_reference=None) -> np.ndarray:
     ----------
     disk : Disk
     ground : Coulomb
-    mode : {"rolling", "sliding", "rolling, pivot stuck", "sliding, pivot stuck"}
-        Rolling: no slip, the contact force follows from the constraint (eqs. 8, 9, 11, 37)
-        with the contact moments of ``ground``; ``X_C, Y_C`` move with the no-slip velocity.
-        Sliding: ``F_t = -mu_k F_z u/|u|`` (``u`` from eq. 6), ``F_z`` from eq. (11).
-        "pivot stuck": the pivoting-friction moment is the one that holds the vertical spin
-        ``omega_z`` constant (``d omega_z/dt = 0``; it sticks at ``omega_z = 0``), derived in
-        :func:`rollingdisk.symbolic.coulomb.derive_pivot_stuck`, whatever its size.
+    mode : str or int
+        A name of :data:`MODE_NAMES` (or its code).  Rolling: no slip, the contact force
+        follows from the constraint (eqs. 8, 9, 11, 37) with the contact moments of
+        ``ground``; ``X_C, Y_C`` move with the no-slip velocity.  Sliding: ``F_t = -mu_k
+        F_z u/|u|`` (``u`` from eq. 6), ``F_z`` from eq. (11).  "pivot stuck": the
+        pivoting-friction moment is the one that holds the vertical spin ``omega_z``
+        constant (``d omega_z/dt = 0``; it sticks at ``omega_z = 0``), derived in
+        :func:`rollingdisk.symbolic.coulomb.derive_pivot_stuck`, whatever its size.  "roll
+        stuck": the rolling-resistance moment is the horizontal one that holds ``omega_h``
+        constant (it sticks at ``omega_h = 0``), derived in
+        :func:`rollingdisk.symbolic.coulomb.derive_roll_stuck`, whatever its size.
+        Outside the stuck modes the moments are ``-c F_z omega_h/|omega_h|`` (0 at
+        ``omega_h = 0``) and ``-c F_z sgn(omega_z)``.
     y : array_like, shape (10,)
     slip_reference : (float, float), optional
         Sliding only: the inertial direction used when ``u = 0`` (default: ``(1, 0)``).
@@ -345,20 +502,30 @@ def coulomb_rhs(disk: Disk, ground, mode, y, slip_reference=None) -> np.ndarray:
     _check_disk(disk)
     g = _check_coulomb(ground)
     y = _as_state("smooth", y)
+    return np.array(_mode_solve(disk.h, g, _check_mode(mode), y, slip_reference)[0])
+
+
+def _mode_solve(h, g, code, y, slip_reference=None):
+    """The kernel of mode ``code`` at ``y`` for the public functions: ``(dy, F_x, F_y, F_z,
+    P_slip, P_roll, P_pivot, P_air, M_piv, M_hx, M_hy)``; free moments along
+    ``omega_h/|omega_h|`` and ``sgn(omega_z)`` (none where these vanish)."""
     cr, cpv, ca = g.coefficients
-    code = _check_mode(mode)
-    if code == ROLLING:
-        return np.array(_coulomb_rolling(disk.h, cr, cpv, ca, y)[0])
-    if code == ROLLING_PIVOT_STUCK:
-        return np.array(_coulomb_rolling_pivot(disk.h, cr, cpv, ca, y, 0.0)[0])
+    sz = 0.0
+    if not code & PIVOT_STUCK:
+        sz = float(np.sign(_omega_z(y[5], y[8], y[9])))
+        if sz == 0.0:  # sgn(0) = 0: no pivot moment
+            sz, cpv = 1.0, 0.0
+    rs = bool(code & ROLL_STUCK)
+    if code & 1 == ROLLING:
+        dy, F_x, F_y, F_z, P1, P2, P3, L, Lx, Ly = _coulomb_rolling_full(
+            h, cr, cpv, ca, y, sz, 0.0, 0.0, 0.0, rs)
+        return dy, F_x, F_y, F_z, 0.0, P1, P2, P3, L, Lx, Ly
+    u = _slip_velocity(h, y)
     rx, ry = (1.0, 0.0) if slip_reference is None else slip_reference
-    u = _slip_velocity(disk.h, y)
     if slip_reference is None and (u[0] or u[1]):
         rx, ry = _to_inertial(y[4], *u)
-    if code == SLIDING_PIVOT_STUCK:
-        return np.array(_coulomb_sliding_pivot(disk.h, g.mu_k, cr, cpv, ca, y, rx, ry, 0.0,
-                                               0.0)[0])
-    return np.array(_coulomb_sliding(disk.h, g.mu_k, cr, cpv, ca, y, rx, ry)[0])
+    return _coulomb_sliding_full(h, g.mu_k, cr, cpv, ca, y, rx, ry, 0.0, sz, 0.0, 0.0, 0.0,
+                                 rs)
 
 
 def _to_inertial(psi, ax, ay):
@@ -375,29 +542,23 @@ def coulomb_contact(disk: Disk, ground, mode, y) -> dict:
         ``F_x, F_y, F_z`` (contact force in Cxyz, units ``m g``), ``F_t = |(F_x, F_y)|``,
         ``u_x, u_y`` (slip velocity, eq. 6), ``power_slip`` (``v_P . F_t``), and the
         powers ``power_rolling_resistance``, ``power_pivot``, ``power_air`` (``omega . M``
-        of each moment; all powers ``<= 0``, eq. 14), and ``M_pivot``, the pivoting-friction
+        of each moment; all powers ``<= 0``, eq. 14), ``M_pivot``, the pivoting-friction
         moment about the vertical (``-c F_z sgn(omega_z)``; in a "pivot stuck" mode the
-        moment that holds ``omega_z``, ``|M_pivot| <= c F_z`` while the pivot sticks).
+        moment that holds ``omega_z``, ``|M_pivot| <= c F_z`` while the pivot sticks), and
+        ``M_roll_x, M_roll_y``, the rolling-resistance moment in Cxyz (``-c F_z
+        omega_h/|omega_h|``; in a "roll stuck" mode the moment that holds ``omega_h``,
+        ``|M_roll| <= c F_z`` while it sticks), units ``m g a``.
     """
     _check_disk(disk)
     g = _check_coulomb(ground)
     y = _as_state("smooth", y)
-    cr, cpv, ca = g.coefficients
     u_x, u_y = _slip_velocity(disk.h, y)
     code = _check_mode(mode)
-    sz = 0.0 if code & PIVOT_STUCK else float(np.sign(_omega_z(y[5], y[8], y[9])))
-    if sz == 0.0 and not code & PIVOT_STUCK:  # sgn(0) = 0: no pivot moment (as the kernels)
-        sz, cpv = 1.0, 0.0
-    if code & 1 == ROLLING:
-        _, F_x, F_y, F_z, P1, P2, P3, L = _coulomb_rolling_pivot(disk.h, cr, cpv, ca, y, sz)
-        P0 = 0.0
-    else:
-        rx, ry = _to_inertial(y[4], u_x, u_y) if (u_x or u_y) else (1.0, 0.0)
-        _, F_x, F_y, F_z, P0, P1, P2, P3, L = _coulomb_sliding_pivot(
-            disk.h, g.mu_k, cr, cpv, ca, y, rx, ry, 0.0, sz)
+    _, F_x, F_y, F_z, P0, P1, P2, P3, L, Lx, Ly = _mode_solve(disk.h, g, code, y)
     return {"F_x": F_x, "F_y": F_y, "F_z": F_z, "F_t": float(np.hypot(F_x, F_y)),
             "u_x": u_x, "u_y": u_y, "power_slip": P0, "power_rolling_resistance": P1,
-            "power_pivot": P2, "power_air": P3, "M_pivot": L}
+            "power_pivot": P2, "power_air": P3, "M_pivot": L, "M_roll_x": Lx,
+            "M_roll_y": Ly}
 
 
 def coulomb_energy(disk: Disk, y):

@@ -1,11 +1,12 @@
 """The contact phase of :func:`rollingdisk.simulate_coulomb` in one compiled loop.
 
 :func:`advance` takes accepted DOP853 steps in one Coulomb mode (rolling or sliding, pivot
-free or stuck, :mod:`rollingdisk.friction.coulomb`) with the step-size control of
-:func:`rollingdisk.integrate.dop853.integrate` (scipy's), and after each step evaluates
-the five event functions of :meth:`rollingdisk.friction.hybrid._Run.events` -- mode end,
-pivot, lift-off ``F_z`` (eq. 11), edge contact ``theta side``, fell flat ``pi/2 - |theta|
-- alpha_min`` -- on the step's dense output at the 9 points the hybrid driver samples
+free or stuck, rolling resistance free or stuck, :mod:`rollingdisk.friction.coulomb`) with
+the step-size control of :func:`rollingdisk.integrate.dop853.integrate` (scipy's), and
+after each step evaluates the six event functions of
+:meth:`rollingdisk.friction.hybrid._Run.events` -- mode end, pivot, lift-off ``F_z``
+(eq. 11), edge contact ``theta side``, fell flat ``pi/2 - |theta| - alpha_min``, roll --
+on the step's dense output at the 9 points the hybrid driver samples
 (:func:`rollingdisk.friction.hybrid._first_event`).  Steps where none crosses from ``> 0``
 to ``<= 0`` are stored and the loop goes on (in sliding the slip reference is updated as
 :meth:`rollingdisk.friction.hybrid._Hybrid._accept` does); at a step where one does, the
@@ -13,7 +14,7 @@ loop returns that step (start, length, dense coefficients) and the Python driver
 the event on it (``brentq``) and handles the transition as before.
 
 Everything here is plain Python on numpy arrays and floats.  :func:`namespace` re-binds
-these functions, the Coulomb kernels (eqs. 6, 8, 9, 11, 37, the pivot sub-modes) and the
+these functions, the Coulomb kernels (eqs. 6, 8, 9, 11, 37, the stuck sub-modes) and the
 DOP853 building blocks of :mod:`rollingdisk.integrate.dop853` to one namespace, in which
 DOP853's ``_rhs(rough, h, y, out)`` is this module's :func:`_rhs` with ``rough`` the
 parameter array ``p`` below; :func:`compiled` hands that namespace to
@@ -25,7 +26,9 @@ State: 14 components, the 10 Coulomb state components and the 4 dissipated energ
 (slip, rolling resistance, pivot, air; eq. 12).  Parameters ``p`` (float64 array, see
 :data:`P_FIELDS`): the mode code, ``mu_k, mu_s``, the moment coefficients, the inertial slip
 reference ``ref`` (updated in place by :func:`advance` in sliding), ``u_eps``, the pivot
-sign ``sz``, the side ``sgn(theta)`` of the segment and ``alpha_min``.
+sign ``sz``, the side ``sgn(theta)`` of the segment, ``alpha_min``, and the inertial
+reference ``rref`` of the rolling resistance (updated in place by :func:`advance` to
+``omega_h/|omega_h|`` while it is free) with its ``w_eps``.
 """
 
 from __future__ import annotations
@@ -46,10 +49,10 @@ from rollingdisk.integrate.roots import (
 
 #: Fields of the parameter array ``p`` of :func:`_rhs` and :func:`advance`, in order.
 P_FIELDS = ("mode", "mu_k", "mu_s", "c_roll", "c_pivot", "c_air", "ref_X", "ref_Y", "u_eps",
-            "sz", "side", "alpha_min")
+            "sz", "side", "alpha_min", "rref_X", "rref_Y", "w_eps")
 _NP = len(P_FIELDS)
 N_STATE = 14
-N_EVENTS = 5
+N_EVENTS = 6
 _N_SUB = 8  # the dense output sampled at j/8 of a step, j = 1..8 (9 points with the start)
 #: Status codes of :func:`advance` (``RUNNING``: paused, call again).
 RUNNING, COMPLETED, EVENT, FAILED, SINGULAR = 0, 1, 2, 3, 4
@@ -58,25 +61,26 @@ RUNNING, COMPLETED, EVENT, FAILED, SINGULAR = 0, 1, 2, 3, 4
 # ------------------------------------------------------------------ right-hand side, events
 def _cc_solve(p, h, y):
     """The mode ``p[0]``'s kernel at ``y``: ``(dy[0:10], P_slip, P_roll, P_pivot, P_air,
-    F_x, F_y, F_z, M_piv)`` (as :meth:`rollingdisk.friction.hybrid._Run.solve`)."""
+    F_x, F_y, F_z, M_piv, M_hx, M_hy)`` (as :meth:`rollingdisk.friction.hybrid._Run.solve`)."""
     mode = int(p[0])
     sz = p[9]
     if mode & 2:
         sz = 0.0
+    rs = (mode & 4) != 0
     if mode & 1 == 0:
-        d, F_x, F_y, F_z, P1, P2, P3, L = _coulomb_rolling_pivot(  # noqa: F821 - namespace
-            h, p[3], p[4], p[5], y, sz)
+        d, F_x, F_y, F_z, P1, P2, P3, L, Lx, Ly = _coulomb_rolling_full(  # noqa: F821
+            h, p[3], p[4], p[5], y, sz, p[12], p[13], p[14], rs)
         P0 = 0.0
     else:
-        d, F_x, F_y, F_z, P0, P1, P2, P3, L = _coulomb_sliding_pivot(  # noqa: F821
-            h, p[1], p[3], p[4], p[5], y, p[6], p[7], p[8], sz)
-    return d, P0, P1, P2, P3, F_x, F_y, F_z, L
+        d, F_x, F_y, F_z, P0, P1, P2, P3, L, Lx, Ly = _coulomb_sliding_full(  # noqa: F821
+            h, p[1], p[3], p[4], p[5], y, p[6], p[7], p[8], sz, p[12], p[13], p[14], rs)
+    return d, P0, P1, P2, P3, F_x, F_y, F_z, L, Lx, Ly
 
 
 def _rhs(p, h, y, out):
     """``dz/dt`` (14 components: eqs. 1, 2, 8, 9 and ``-P`` of each dissipation term) into
     ``out``, in the mode and with the parameters ``p``."""
-    d, P0, P1, P2, P3, F_x, F_y, F_z, L = _cc_solve(p, h, y)
+    d, P0, P1, P2, P3, F_x, F_y, F_z, L, Lx, Ly = _cc_solve(p, h, y)
     for i in range(10):
         out[i] = d[i]
     out[10] = -P0
@@ -87,7 +91,7 @@ def _rhs(p, h, y, out):
 
 def _rhs_col(p, h, y, K, s):
     """:func:`_rhs` into column ``s`` of the stage array ``K``."""
-    d, P0, P1, P2, P3, F_x, F_y, F_z, L = _cc_solve(p, h, y)
+    d, P0, P1, P2, P3, F_x, F_y, F_z, L, Lx, Ly = _cc_solve(p, h, y)
     for i in range(10):
         K[i, s] = d[i]
     K[10, s] = -P0
@@ -98,10 +102,11 @@ def _rhs_col(p, h, y, K, s):
 
 def _cc_events(p, h, y, g):
     """The event functions of :meth:`rollingdisk.friction.hybrid._Run.events` into ``g``
-    (5), each crossing from ``> 0`` to ``<= 0``: mode end (rolling: ``mu_s F_z - |F_t|``;
+    (6), each crossing from ``> 0`` to ``<= 0``: mode end (rolling: ``mu_s F_z - |F_t|``;
     sliding: ``U . ref``), pivot (``sz omega_z``, or ``c F_z - |M_piv|`` while stuck),
-    ``F_z``, ``theta side`` (1 for ``h = 0``), ``pi/2 - |theta| - alpha_min``."""
-    d, P0, P1, P2, P3, F_x, F_y, F_z, L = _cc_solve(p, h, y)
+    ``F_z``, ``theta side`` (1 for ``h = 0``), ``pi/2 - |theta| - alpha_min``, roll
+    (``omega_h . rref``, inertial, or ``c F_z - |M_h|`` while stuck)."""
+    d, P0, P1, P2, P3, F_x, F_y, F_z, L, Lx, Ly = _cc_solve(p, h, y)
     mode = int(p[0])
     if mode & 1 == 0:
         g[0] = p[2] * F_z - math.hypot(F_x, F_y)
@@ -117,6 +122,12 @@ def _cc_events(p, h, y, g):
     g[2] = F_z
     g[3] = theta * p[10] if h > 0 else 1.0
     g[4] = 0.5 * math.pi - abs(theta) - p[11]
+    if mode & 4:
+        g[5] = p[3] * F_z - math.hypot(Lx, Ly)
+    else:
+        W_X, W_Y = _to_inertial(y[4], y[7], y[8] * math.cos(theta)  # noqa: F821
+                                - y[9] * math.sin(theta))
+        g[5] = W_X * p[12] + W_Y * p[13]
 
 
 def _all_finite(a, n, c0, c1):
@@ -143,9 +154,11 @@ def advance(p, h, t, y0, t_end, dt_try, rtol, atolv, max_step, max_steps, active
 
     Parameters
     ----------
-    p : ndarray, shape (12,)
+    p : ndarray, shape (15,)
         Parameters (:data:`P_FIELDS`); in sliding ``ref`` (``p[6:8]``) is set to ``U/|U|``
-        after every stored step where ``|U| > u_eps`` (as the Python driver does).
+        after every stored step where ``|U| > u_eps``, with rolling resistance on and free
+        ``rref`` (``p[12:14]``) to ``omega_h/|omega_h|`` where ``|omega_h| > w_eps`` (as the
+        Python driver does).
     h : float
         Half-thickness of the disk (units of the radius ``a``).
     t, y0 : float, ndarray (14,)
@@ -160,7 +173,7 @@ def advance(p, h, t, y0, t_end, dt_try, rtol, atolv, max_step, max_steps, active
     max_step : float
     max_steps : int
         Most steps taken in this call (the run's remaining step budget).
-    active : ndarray of bool, shape (5,)
+    active : ndarray of bool, shape (6,)
         Which event functions count.
     ts, zs : ndarray, shapes (cap,), (cap, 14)
         Output: the stored steps; the call pauses when they are full.
@@ -209,6 +222,7 @@ def advance(p, h, t, y0, t_end, dt_try, rtol, atolv, max_step, max_steps, active
     dt = 0.0
     h_next = dt_abs
     sliding = int(p[0]) & 1 == 1
+    roll_free = p[3] > 0.0 and (int(p[0]) & 4) == 0
     while status == RUNNING:
         if t >= t_end:
             status = COMPLETED
@@ -284,6 +298,13 @@ def advance(p, h, t, y0, t_end, dt_try, rtol, atolv, max_step, max_steps, active
             if nu > p[8]:
                 p[6] = U_X / nu
                 p[7] = U_Y / nu
+        if roll_free:
+            W_X, W_Y = _to_inertial(y[4], y[7], y[8] * math.cos(y[5])  # noqa: F821
+                                    - y[9] * math.sin(y[5]))
+            nw = math.hypot(W_X, W_Y)
+            if nw > p[14]:
+                p[12] = W_X / nw
+                p[13] = W_Y / nw
         _cc_events(p, h, y, g_old)
         dt_abs = h_next
     return status, m, n_steps, n_rhs, t, y, dt_abs, t_new, dt, y_new, F
@@ -422,7 +443,9 @@ def touchdown_scan(Z0, VZ0, par, per, crs, Om_p, h, t, Ht):
 _KERNELS = ("_inertia", "_geometry", "_coulomb_moments", "_coulomb_powers", "_omega_z",
             "_rolling_solve", "_sliding_solve", "_stuck_correction", "_rolling_stuck_solve",
             "_sliding_stuck_solve", "_pivot_moments", "_slip_velocity", "_to_inertial",
-            "_friction_direction", "_coulomb_rolling_pivot", "_coulomb_sliding_pivot")
+            "_friction_direction", "_roll_direction", "_mode_moments", "_hold_h",
+            "_rolling_response", "_rolling_roll_stuck_solve", "_sliding_roll_stuck_solve",
+            "_coulomb_rolling_full", "_coulomb_sliding_full")
 _OWN = ("_cc_solve", "_rhs", "_rhs_col", "_cc_events", "_all_finite", "_vec_finite")
 _DOP = ("_combine", "_step", "_dense_tail", "_dense_coefficients", "_dense_value",
         "_error_norm_v", "_step_factor", "_rms", "_initial_step_scaled", "initial_step_v")
@@ -467,7 +490,7 @@ def _probe_states():
     probe): ``(p, h, y)``."""
     rng = np.random.default_rng(2024)
     out = []
-    for mode in range(4):
+    for mode in range(8):
         h = 0.0 if mode == 0 else 0.2
         y = np.zeros(N_STATE)
         y[2:4] = rng.uniform(-0.3, 0.3, 2)
@@ -475,7 +498,7 @@ def _probe_states():
         y[5] = 0.4 + 0.2 * rng.uniform()
         y[7:10] = rng.uniform(-1.0, 1.0, 3)
         p = np.array([float(mode), 0.4, 0.5, 0.01, 0.02, 0.003, 0.6, 0.8, 1e-8, -1.0, 1.0,
-                      1e-8])
+                      1e-8, -0.8, 0.6, 1e-8])
         out.append((p, h, y))
     return out
 

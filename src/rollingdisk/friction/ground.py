@@ -107,14 +107,23 @@ class RollingResistance:
     """Rolling resistance: a Coulomb-type moment opposing the rolling (tilting) rotation.
 
     ``M_h = -c F_z omega_h / |omega_h|`` with ``omega_h = (omega_x, omega_y)`` the horizontal
-    part of the angular velocity in Cxyz, ``M_z = 0``; zero when ``omega_h = 0``.  Its
-    power is ``-c F_z |omega_h| <= 0``.  ``c`` (units of ``a``) is the rolling-resistance
-    length, the lever arm by which the normal force is offset ahead of the contact point.
+    part of the angular velocity in Cxyz, ``M_z = 0``; zero when ``omega_h = 0`` (these
+    methods).  Its power is ``-c F_z |omega_h| <= 0``.  ``c`` (units of ``a``) is the
+    rolling-resistance length, the lever arm by which the normal force is offset ahead of
+    the contact point.
+
+    The law is set-valued at ``omega_h = 0``: there ``|M_h| <= c F_z``.  The hybrid
+    simulation (:func:`rollingdisk.simulate_coulomb`) treats it so: where ``omega_h``
+    stops, the moment that holds it at zero (derived in
+    :func:`rollingdisk.symbolic.coulomb.derive_roll_stuck`) is taken if it fits in
+    ``c F_z`` (a "roll stuck" mode, left when that moment reaches ``c F_z``), else the
+    moment flips.
 
     Source: the set-valued rolling friction law of Le Saux, Leine & Glocker, "Dynamics of a
     rolling disk in the presence of dry friction", J. Nonlinear Sci. 15 (2005) 27 (their
-    rolling-friction torque bounded by ``F_z`` times a length), in its sliding branch; the
-    same form is Chrono's rolling friction.  See ``docs/friction.md``.
+    rolling-friction torque bounded by ``F_z`` times a length), its sliding branch here
+    and its sticking branch in the hybrid driver; the same form is Chrono's rolling
+    friction.  See ``docs/friction.md``.
     """
 
     c: float

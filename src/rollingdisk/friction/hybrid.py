@@ -17,6 +17,15 @@ The disk is in one of two modes (:mod:`rollingdisk.friction.coulomb`):
     (set-valued: ``|M_z| <= c F_z``, issue 22).  Entered when ``omega_z`` reaches 0 (event
     ``sz omega_z``, ``sz`` its sign on the segment) and the moment that holds it fits in
     ``c F_z``; left when that moment reaches ``c F_z`` (event ``c F_z - |M_piv|``).
+``..., roll stuck``
+    any of these with the horizontal angular velocity ``omega_h`` held at 0 by the rolling
+    resistance (set-valued: ``|M_h| <= c F_z``).  Outside it the moment is ``-c F_z
+    sgn(omega_h . rref) omega_h/|omega_h|``, ``rref`` the direction of ``omega_h`` at the
+    last step; at a zero of ``omega_h . rref`` with ``omega_h`` at rest (within
+    :data:`STICK_TOL`) it sticks if the moment that holds it fits in ``c F_z``, else the
+    moment flips; with ``omega_h`` not at rest ``rref`` is renewed.  Left when the holding
+    moment reaches ``c F_z`` (event ``c F_z - |M_h|``).  Both paths (scipy, compiled) run
+    every mode.
 
 Terminal guards as on the ideal grounds: lift-off (``F_z = 0``, eq. 11), edge contact
 (``theta = 0`` with ``h > 0``), fell flat (``|theta| = pi/2``).
@@ -63,7 +72,8 @@ __all__ = ["simulate_coulomb", "slip_direction", "energy_balance", "DISSIPATION_
 #: Names of the dissipation terms recorded in :attr:`Trajectory.dissipated`.
 DISSIPATION_TERMS = ("slip", "rolling_resistance", "pivot", "air")
 
-ROLLING, SLIDING, PIVOT_STUCK = _cl.ROLLING, _cl.SLIDING, _cl.PIVOT_STUCK
+ROLLING, SLIDING, PIVOT_STUCK, ROLL_STUCK = (_cl.ROLLING, _cl.SLIDING, _cl.PIVOT_STUCK,
+                                             _cl.ROLL_STUCK)
 _NAMES = _cl.MODE_NAMES
 _N_SAMPLE = 9  # points of the dense output at which events are looked for, per step
 #: Slip speed below which sliding keeps the reference direction (the solved initial slip
@@ -72,6 +82,9 @@ U_EPS = 1e-8
 #: Slip speed (relative to 1 + |V|) above which a zero of ``u . u_ref`` is a turn of the slip
 #: direction, not the slip coming to rest.
 STICK_TOL = 1e-6
+#: ``|omega_h|`` below which the rolling resistance keeps its reference direction (as
+#: :data:`U_EPS` for the slip).
+W_EPS = 1e-8
 
 
 def _slip_accel(h, mu_k, coeffs, y, e_x, e_y, sz=None):
@@ -175,9 +188,12 @@ class _Run:
     """One hybrid run: the right-hand sides and event functions of the modes.
 
     A mode is ``ROLLING`` or ``SLIDING``, with the bit ``PIVOT_STUCK`` while the pivot
-    sticks.  Outside it the pivot moment is ``-c F_z sz`` with ``sz`` (``self.sz``) the sign
-    of ``omega_z`` on the current segment: the smooth continuation through ``omega_z = 0``,
-    where the driver stops (an event), as the slip reference does for sliding."""
+    sticks and ``ROLL_STUCK`` while the rolling resistance sticks.  Outside them the pivot
+    moment is ``-c F_z sz`` with ``sz`` (``self.sz``) the sign of ``omega_z`` on the
+    current segment, the rolling-resistance moment ``-c F_z sgn(omega_h . rref)
+    omega_h/|omega_h|`` with ``rref`` (``self.rref``, inertial) the direction of ``omega_h``
+    at the last step: the smooth continuations through ``omega_z = 0``, ``omega_h = 0``,
+    where the driver stops (events), as the slip reference does for sliding."""
 
     def __init__(self, disk, ground, alpha_min=0.0):
         self.alpha_min = alpha_min
@@ -185,7 +201,7 @@ class _Run:
         self.h = disk.h
         self.g = ground
         self.coeffs = ground.coefficients
-        self.c_pivot = self.coeffs[1]
+        self.c_roll, self.c_pivot = self.coeffs[0], self.coeffs[1]
         self.ref = (1.0, 0.0)  # inertial slip reference direction (sliding)
         # a slip started from u = 0 is resolved once |u| passes a floor (_start_sliding):
         # until then its end is not looked for and the friction keeps the direction ref
@@ -193,50 +209,61 @@ class _Run:
         self.u_eps = U_EPS  # |u| below which the friction direction is ref
         self.floor = 0.0
         self.sz = 1.0  # sgn(omega_z) on the segment (pivot not stuck)
+        self.rref = (0.0, 0.0)  # inertial direction of omega_h (rolling resistance)
         self.n_rhs = 0
 
     def pivot_state(self, mode):
         """``sz`` of the kernels: 0 while the pivot sticks, else the segment's sign."""
         return 0.0 if mode & PIVOT_STUCK else self.sz
 
-    def solve(self, mode, z):
+    def solve(self, mode, z, rref=None, w_eps=W_EPS):
         """The mode's kernel at ``z``: ``(dy, F_x, F_y, F_z, P_slip, P_roll, P_pivot,
-        P_air, M_piv)``."""
+        P_air, M_piv, M_hx, M_hy)`` (``rref``: another rolling-resistance reference)."""
         h, cf, sz = self.h, self.coeffs, self.pivot_state(mode)
+        rx, ry = self.rref if rref is None else rref
+        rs = bool(mode & ROLL_STUCK)
         if mode & 1 == ROLLING:
-            dy, F_x, F_y, F_z, P1, P2, P3, L = _cl._coulomb_rolling_pivot(h, *cf, z, sz)
-            return dy, F_x, F_y, F_z, 0.0, P1, P2, P3, L
-        return _cl._coulomb_sliding_pivot(h, self.g.mu_k, *cf, z, self.ref[0], self.ref[1],
-                                          self.u_eps, sz)
+            dy, F_x, F_y, F_z, P1, P2, P3, L, Lx, Ly = _cl._coulomb_rolling_full(
+                h, *cf, z, sz, rx, ry, w_eps, rs)
+            return dy, F_x, F_y, F_z, 0.0, P1, P2, P3, L, Lx, Ly
+        return _cl._coulomb_sliding_full(h, self.g.mu_k, *cf, z, self.ref[0], self.ref[1],
+                                         self.u_eps, sz, rx, ry, w_eps, rs)
 
     def rhs(self, mode):
         def f(t, z):
             self.n_rhs += 1
-            dy, F_x, F_y, F_z, P0, P1, P2, P3, L = self.solve(mode, z)
+            dy, F_x, F_y, F_z, P0, P1, P2, P3, *_ = self.solve(mode, z)
             return _finite(t, np.array([*dy, -P0, -P1, -P2, -P3]))
         return f
 
     def contact(self, mode, z):
-        """``(F_t, F_z, u_ref_component, M_piv)`` at ``z`` in ``mode``."""
-        _, F_x, F_y, F_z, *_, L = self.solve(mode, z)
+        """``(F_t, F_z, u_ref_component, M_piv, M_hx, M_hy)`` at ``z`` in ``mode``."""
+        _, F_x, F_y, F_z, *_, L, Lx, Ly = self.solve(mode, z)
         if mode & 1 == ROLLING:
-            return math.hypot(F_x, F_y), F_z, 0.0, L
+            return math.hypot(F_x, F_y), F_z, 0.0, L, Lx, Ly
         U_X, U_Y = _inertial_slip(self.h, z)
-        return math.hypot(F_x, F_y), F_z, U_X * self.ref[0] + U_Y * self.ref[1], L
+        return math.hypot(F_x, F_y), F_z, U_X * self.ref[0] + U_Y * self.ref[1], L, Lx, Ly
 
     def events(self, mode, z):
         """Event functions, each crossing from > 0 to <= 0:
-        ``[mode end, pivot, lift-off, edge contact, fell flat]``; pivot: ``omega_z`` reaches
-        0 (``sz omega_z``), or, while stuck, the moment holding it reaches ``c F_z``."""
-        F_t, F_z, along, L = self.contact(mode, z)
+        ``[mode end, pivot, lift-off, edge contact, fell flat, roll]``; pivot: ``omega_z``
+        reaches 0 (``sz omega_z``), or, while stuck, the moment holding it reaches
+        ``c F_z``; roll: ``omega_h`` turns across ``rref`` (``omega_h . rref``, inertial),
+        or, while stuck, the moment holding it reaches ``c F_z``."""
+        F_t, F_z, along, L, Lx, Ly = self.contact(mode, z)
         end = self.g.mu_s * F_z - F_t if mode & 1 == ROLLING else along
         theta = z[5]
         if mode & PIVOT_STUCK:
             pivot = self.c_pivot * F_z - abs(L)
         else:
             pivot = self.sz * _cl._omega_z(theta, z[8], z[9])
+        if mode & ROLL_STUCK:
+            roll = self.c_roll * F_z - math.hypot(Lx, Ly)
+        else:
+            W_X, W_Y = _inertial_omega_h(z)
+            roll = W_X * self.rref[0] + W_Y * self.rref[1]
         return [end, pivot, F_z, theta * self.side if self.h > 0 else 1.0,
-                0.5 * math.pi - abs(theta) - self.alpha_min]
+                0.5 * math.pi - abs(theta) - self.alpha_min, roll]
 
 
 def _DOP853():
@@ -250,6 +277,13 @@ def _DOP853():
 def _inertial_slip(h, z):
     u_x, u_y = _cl._slip_velocity(h, z)
     return _cl._to_inertial(z[4], u_x, u_y)
+
+
+def _inertial_omega_h(z):
+    """Horizontal angular velocity ``omega_h`` in OXYZ (``(omega_x, omega_y)`` of Cxyz
+    turned by ``psi``)."""
+    theta, w1, w2, w3 = z[5], z[7], z[8], z[9]
+    return _cl._to_inertial(z[4], w1, w2 * math.cos(theta) - w3 * math.sin(theta))
 
 
 @dataclass(frozen=True, eq=False, repr=False)  # Trajectory's short repr, not every array
@@ -473,7 +507,11 @@ class _Hybrid:
         self.t = t0
         self.z = np.concatenate([y, np.zeros(4)])
         self.run.sz = -1.0 if _cl._omega_z(y[5], y[8], y[9]) < 0.0 else 1.0
-        self.mode = self._initial_pivot(self._initial_mode())
+        W = _inertial_omega_h(self.z)
+        n = math.hypot(*W)
+        if n > 0.0:
+            self.run.rref = (W[0] / n, W[1] / n)
+        self.mode = self._initial_roll(self._initial_pivot(self._initial_mode()))
         self.points.add(t0, self.z, self.mode, pinned=True)
 
     def _initial_mode(self):
@@ -484,7 +522,7 @@ class _Hybrid:
         speed = math.hypot(z[2], z[3])
         if math.hypot(*U) <= self.o["slip_tol"] * (1.0 + speed):
             z[2], z[3] = _cl._rolling_velocity(h, z)
-            F_t, F_z, _, _ = run.contact(ROLLING, z)
+            F_t, F_z, *_ = run.contact(ROLLING, z)
             if F_t > self.ground.mu_s * F_z:
                 self.transitions.append(Transition(self.t0, "rolling", "sliding"))
                 return _start_sliding(run, self.disk, self.ground, z)
@@ -511,11 +549,40 @@ class _Hybrid:
         that holds ``omega_z = 0`` lies within ``c F_z``; else ``base`` with ``sz`` the way
         ``omega_z`` turns (the pivot moment at its bound opposes it)."""
         run = self.run
-        base &= 1
-        _, F_z, _, L = run.contact(base | PIVOT_STUCK, self.z)
+        base &= ~PIVOT_STUCK
+        _, F_z, _, L, _, _ = run.contact(base | PIVOT_STUCK, self.z)
         if abs(L) <= run.c_pivot * F_z:
             return base | PIVOT_STUCK
         run.sz = -1.0 if L > 0.0 else 1.0
+        return base
+
+    def _initial_roll(self, mode):
+        """The rolling-resistance state at ``t0``: stuck if ``omega_h`` is negligible
+        (``slip_tol`` relative to ``1 + |omega|``) and the moment holding it lies within
+        ``c F_z``; else ``rref`` the direction of ``omega_h``, or the way it will turn."""
+        run, z = self.run, self.z
+        if run.c_roll == 0.0:
+            return mode
+        if math.hypot(*_inertial_omega_h(z)) > self.o["slip_tol"] * (
+                1.0 + float(np.linalg.norm(z[7:10]))):
+            return mode
+        return self._roll_settles(mode)
+
+    def _roll_settles(self, mode):
+        """At ``omega_h = 0`` in ``mode`` (its ``ROLL_STUCK`` bit ignored): the roll-stuck
+        sub-mode if the moment that holds ``omega_h = 0`` lies within ``c F_z``; else the
+        mode free, ``rref`` the way ``omega_h`` turns (:func:`_roll_turn`)."""
+        run = self.run
+        base = mode & ~ROLL_STUCK
+        _, F_z, _, _, Lx, Ly = run.contact(base | ROLL_STUCK, self.z)
+        n = math.hypot(Lx, Ly)
+        if n <= run.c_roll * F_z:
+            return base | ROLL_STUCK
+        d = _roll_turn(run, base, self.z)
+        if d is not None:
+            run.rref = d
+        elif n > 0.0:  # no consistent direction: along -M_h
+            run.rref = _cl._to_inertial(self.z[4], -Lx / n, -Ly / n)
         return base
 
     def integrate(self):
@@ -599,11 +666,12 @@ class _Hybrid:
         run, o, mode, g = self.run, self.o, self.mode, self.ground
         c_roll, c_pivot, c_air = run.coeffs
         p = np.array([mode, g.mu_k, g.mu_s, c_roll, c_pivot, c_air, run.ref[0], run.ref[1],
-                      run.u_eps, run.sz, run.side, run.alpha_min], dtype=float)
+                      run.u_eps, run.sz, run.side, run.alpha_min, run.rref[0], run.rref[1],
+                      W_EPS], dtype=float)
         atolv = np.full(self.z.shape[0], float(o["atol"]))
         edge = self.h > 0 and self.guards
         active = np.array([run.armed or mode & 1 == ROLLING, c_pivot > 0.0, self.guards,
-                           edge, self.guards], dtype=np.bool_)
+                           edge, self.guards, c_roll > 0.0], dtype=np.bool_)
         ts = np.empty(CHUNK)
         zs = np.empty((CHUNK, self.z.shape[0]))
         advance = ns["advance"]
@@ -622,6 +690,7 @@ class _Hybrid:
             for i in range(m):
                 add(float(ts[i]), zs[i], mode)
             run.ref = (float(p[6]), float(p[7]))
+            run.rref = (float(p[12]), float(p[13]))
             self.t, self.z = float(t), y.copy()
             if not active[0] and m and self._arms(self.z):  # one step a call while not armed
                 active[0] = True
@@ -653,6 +722,7 @@ class _Hybrid:
                 # at a zero): the step is a regular one
                 self._accept_point(float(t_new), np.array(y_new))
                 p[6], p[7] = run.ref
+                p[12], p[13] = run.rref
             dt_try = dt_next
 
     def _out_of_budget(self, t):
@@ -714,17 +784,27 @@ class _Hybrid:
 
     def _accept_point(self, t, z):
         """Store the regular step ending at ``(t, z)``; in sliding the slip reference
-        becomes ``U/|U|`` there; the event values at ``z``."""
+        becomes ``U/|U|`` there, with rolling resistance free ``rref`` becomes
+        ``omega_h/|omega_h|``; the event values at ``z``."""
         run, mode = self.run, self.mode
         self.t, self.z = t, z
         self.points.add(self.t, self.z, mode)
         g_old = run.events(mode, self.z)
+        renew = False
         if mode & 1 == SLIDING and (run.armed or self._arms(self.z)):
             U = _inertial_slip(self.h, self.z)
             n = math.hypot(*U)
             if n > U_EPS:
                 run.ref = (U[0] / n, U[1] / n)
-                g_old = run.events(mode, self.z)
+                renew = True
+        if run.c_roll > 0.0 and not mode & ROLL_STUCK:
+            W = _inertial_omega_h(self.z)
+            n = math.hypot(*W)
+            if n > W_EPS:
+                run.rref = (W[0] / n, W[1] / n)
+                renew = True
+        if renew:
+            g_old = run.events(mode, self.z)
         self._report()
         return g_old
 
@@ -764,7 +844,7 @@ class _Hybrid:
         self.t, self.z = te, np.asarray(sol(te), dtype=float).copy()
         self.points.add(self.t, self.z, self.mode, pinned=True)
         t = self.t
-        if k > 1:  # terminal guard
+        if k in (2, 3, 4):  # terminal guard
             self.status = ("lift-off", "edge-contact", "fell-flat")[k - 2]
             self.t_event = t
             self.message = _message(self.status, t, self.h)
@@ -778,6 +858,8 @@ class _Hybrid:
         if k == 1:
             self._pivot_event()
             return True
+        if k == 5:
+            return self._roll_event()
         if self.mode & 1 == SLIDING:
             turned = self._slip_turned()
             if turned is not None:
@@ -790,14 +872,45 @@ class _Hybrid:
         moment holding the stuck pivot reached ``c F_z`` (the pivot slips, ``sz`` the way
         ``omega_z`` turns)."""
         if self.mode & PIVOT_STUCK:
-            _, _, _, L = self.run.contact(self.mode, self.z)
+            L = self.run.contact(self.mode, self.z)[3]
             self.run.sz = -1.0 if L > 0.0 else 1.0
-            new = self.mode & 1
+            new = self.mode & ~PIVOT_STUCK
         else:
             new = self._pivot_settles(self.mode)
         if new != self.mode:
             self.transitions.append(Transition(self.t, _NAMES[self.mode], _NAMES[new]))
         self.mode = new
+
+    def _roll_event(self):
+        """``omega_h`` turned across ``rref``: at rest (``|omega_h|`` within
+        :data:`STICK_TOL` of 0) the rolling resistance sticks if it can, else its moment
+        flips; not at rest, ``rref`` is renewed.  Or the moment holding the stuck
+        ``omega_h`` reached ``c F_z``: it unsticks, ``omega_h`` turning along ``-M_h``
+        (the moment at its bound stays ``M_h``).  True if the run goes on."""
+        run, z, t = self.run, self.z, self.t
+        if self.mode & ROLL_STUCK:
+            *_, Lx, Ly = run.contact(self.mode, z)
+            n = math.hypot(Lx, Ly)
+            if n > 0.0:
+                run.rref = _cl._to_inertial(z[4], -Lx / n, -Ly / n)
+            new = self.mode & ~ROLL_STUCK
+        else:
+            W = _inertial_omega_h(z)
+            n = math.hypot(*W)
+            if n > STICK_TOL * (1.0 + float(np.linalg.norm(z[7:10]))):
+                if self.last_turn is not None and t - self.last_turn <= 1e-12 * (1.0 + abs(t)):
+                    self.status = "failed"
+                    self.message = (f"stuck at t = {t:.12g}: omega_h turned twice at the "
+                                    "same time (a discontinuity of the equations)")
+                    return False
+                self.last_turn = t
+                run.rref = (W[0] / n, W[1] / n)  # turned without vanishing: no transition
+                return True
+            new = self._roll_settles(self.mode)
+        if new != self.mode:
+            self.transitions.append(Transition(t, _NAMES[self.mode], _NAMES[new]))
+        self.mode = new
+        return True
 
     def _slip_turned(self):
         """At a zero of ``u . u_ref`` with the slip not at rest: a new slip reference
@@ -823,16 +936,19 @@ class _Hybrid:
         differs): rolling starts to slide; sliding rolls if the cone allows, else slides on.
         A stuck pivot stays stuck if the new contact mode can hold it."""
         run, z, disk, ground = self.run, self.z, self.disk, self.ground
-        stuck = self.mode & PIVOT_STUCK
+        stuck = self.mode & (PIVOT_STUCK | ROLL_STUCK)
         if self.mode & 1 == ROLLING:
             new = _start_sliding(run, disk, ground, z, stuck)
         else:
             z[2], z[3] = _cl._rolling_velocity(self.h, z)  # u = 0 up to the event tolerance
-            F_t, F_z, _, _ = run.contact(ROLLING | stuck, z)
+            F_t, F_z, *_ = run.contact(ROLLING | stuck, z)
             new = (ROLLING if F_t <= ground.mu_s * F_z
                    else _start_sliding(run, disk, ground, z, stuck))
-        if stuck:
+        new |= stuck
+        if stuck & PIVOT_STUCK:
             new = self._pivot_settles(new)
+        if stuck & ROLL_STUCK:
+            new = self._roll_settles(new)
         if new != self.mode:
             self.transitions.append(Transition(self.t, _NAMES[self.mode], _NAMES[new]))
         self.mode = new
@@ -875,9 +991,14 @@ class _DenseStep:
 
 def _start_sliding(run, disk, ground, z, stuck=0):
     """Switch to sliding at a state with ``u = 0``: the slip direction is solved (with the
-    pivot as it is: stuck if ``stuck``, else the segment's ``sz``)."""
+    pivot as it is: stuck if ``stuck`` has ``PIVOT_STUCK``, else the segment's ``sz``; with
+    the rolling resistance stuck its moment, set-valued there, is left out of this solve).
+    Returns ``SLIDING`` (the caller keeps the stuck bits)."""
     sz = run.pivot_state(stuck)
-    d = _slip_direction(disk.h, ground.mu_k, ground.coefficients, z[:10], sz)
+    coeffs = ground.coefficients
+    if stuck & ROLL_STUCK:
+        coeffs = (0.0, coeffs[1], coeffs[2])
+    d = _slip_direction(disk.h, ground.mu_k, coeffs, z[:10], sz)
     if d is None:  # no consistent slip direction: oppose the rolling friction force
         _, F_x, F_y, *_ = run.solve(ROLLING | stuck, z)
         n = math.hypot(F_x, F_y) or 1.0
@@ -888,17 +1009,57 @@ def _start_sliding(run, disk, ground, z, stuck=0):
     return SLIDING
 
 
+def _roll_turn(run, mode, z):
+    """The inertial direction ``d`` along which ``omega_h`` starts to grow from 0 in
+    ``mode`` (not roll stuck) when the rolling resistance cannot hold it: with the moment
+    ``-c F_z d``, ``d omega_h/dt`` is along ``+d`` (the Cxyz rates of (9), ``d omega_y/dt =
+    domega2 cos - domega3 sin - omega1 omega_z``).  Found as :func:`slip_direction`
+    finds the slip direction: a scan of the angle, ``brentq`` on ``d x d omega_h/dt = 0``,
+    among the roots with ``d . d omega_h/dt > 0`` the one of largest rate; ``None`` if
+    there is none."""
+    from scipy.optimize import brentq
+
+    psi, theta, w1, w2, w3 = z[4], z[5], z[7], z[8], z[9]
+    s, c = math.sin(theta), math.cos(theta)
+    wz = w2 * s + w3 * c
+
+    def parts(a):
+        ex, ey = math.cos(a), math.sin(a)  # Cxyz
+        dy = run.solve(mode, z, _cl._to_inertial(psi, ex, ey), math.inf)[0]
+        ax, ay = dy[7], dy[8] * c - dy[9] * s - w1 * wz
+        return ex * ay - ey * ax, ex * ax + ey * ay
+
+    grid = np.linspace(0.0, 2.0 * math.pi, 145)
+    vals = [parts(a)[0] for a in grid]
+    best = None
+    for i in range(grid.size - 1):
+        f0, f1 = vals[i], vals[i + 1]
+        if f0 == 0.0:
+            a = grid[i]
+        elif f0 * f1 < 0.0:
+            a = brentq(lambda x: parts(x)[0], grid[i], grid[i + 1], xtol=1e-15, rtol=8.9e-16)
+        else:
+            continue
+        along = parts(a)[1]
+        if along > 0.0 and (best is None or along > best[1]):
+            best = (a, along)
+    if best is None:
+        return None
+    return _cl._to_inertial(psi, math.cos(best[0]), math.sin(best[0]))
+
+
 def _first_event(run, mode, sol, ta, tb, g_old, edge, guards):
     """The first event in ``(ta, tb]`` on the dense output ``sol``: ``(index, time)``."""
     from scipy.optimize import brentq
 
-    active = [run.armed or mode & 1 == ROLLING, run.c_pivot > 0.0, guards, edge, guards]
+    active = [run.armed or mode & 1 == ROLLING, run.c_pivot > 0.0, guards, edge, guards,
+              run.c_roll > 0.0]
     ts = np.linspace(ta, tb, _N_SAMPLE)
     prev = g_old
     best = None
     for i in range(1, ts.size):
         gi = run.events(mode, np.asarray(sol(ts[i])))
-        for k in range(5):
+        for k in range(6):
             if active[k] and prev[k] > 0.0 and gi[k] <= 0.0:
                 def fk(s, k=k):
                     return run.events(mode, np.asarray(sol(s)))[k]

@@ -25,7 +25,8 @@ __all__ = ["Trajectory", "Transition"]
 class Transition:
     """A change of mode on Coulomb ground at time ``t``: ``from_mode -> to_mode``
     (names of :data:`rollingdisk.friction.coulomb.MODE_NAMES`: ``"rolling"``, ``"sliding"``,
-    ``"rolling, pivot stuck"``, ``"sliding, pivot stuck"``)."""
+    ``"rolling, pivot stuck"``, ``"sliding, pivot stuck"``, and the same four with
+    ``", roll stuck"``)."""
 
     t: float
     from_mode: str
@@ -88,7 +89,8 @@ class Trajectory:
     mode : ndarray of int8 or None
         Coulomb ground only: the mode at each stored point, codes
         :data:`rollingdisk.friction.coulomb.MODE_NAMES` (0 rolling, 1 sliding, 2, 3
-        the same with the pivot stuck); ``None`` for
+        the same with the pivot stuck, 4-7 the first four with the rolling resistance
+        stuck); ``None`` for
         single-mode runs (rough, smooth).
     transitions : tuple of Transition
         Coulomb ground only: the mode changes ``(t, from_mode, to_mode)``, in time order.

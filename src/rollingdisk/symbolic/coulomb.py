@@ -45,7 +45,8 @@ from .derivation import (
 )
 
 __all__ = ["CoulombDerivation", "derive_coulomb", "lambdified_coulomb", "classic_transition",
-           "derive_pivot_stuck", "lambdified_pivot_stuck"]
+           "derive_pivot_stuck", "lambdified_pivot_stuck", "derive_roll_stuck",
+           "lambdified_roll_stuck"]
 
 mu, e_x, e_y = sp.symbols("mu e_x e_y", real=True)
 M0 = sp.symbols("M0x M0y M0z", real=True)
@@ -231,3 +232,89 @@ def lambdified_pivot_stuck() -> dict:
     sliding = sp.lambdify(base + (v_Cx, v_Cy, mu, e_x, e_y) + M0 + M1,
                           [c["sliding"][k] for k in keys + ("dv_Cx", "dv_Cy")], "numpy")
     return {"rolling": rolling, "sliding": sliding}
+
+
+# ---------------------------------------------------------------------------------------
+# Set-valued rolling resistance: the "roll stuck" sub-modes
+# ---------------------------------------------------------------------------------------
+#: The horizontal moment (Cxyz) while the rolling resistance sticks: unknowns.
+M_hx, M_hy = sp.symbols("M_hx M_hy", real=True)
+
+
+@lru_cache(maxsize=1)
+def derive_roll_stuck() -> dict:
+    """Rolling and sliding with the horizontal angular velocity held at zero (roll stuck).
+
+    Rolling resistance ``-c F_z omega_h/|omega_h|`` is set-valued at ``omega_h = 0``
+    (``omega_h = (omega_x, omega_y) = (omega1, omega2 cos(theta) - omega3 sin(theta))``, the
+    horizontal angular velocity in Cxyz): there the moment ``(M_hx, M_hy)`` is whatever
+    keeps ``omega_h = 0``, as long as ``|M_h| <= c F_z``.  The contact moment is
+    ``M = M0 + F_z M1 + (M_hx, M_hy, 0)``: the held moment adds to ``M0``, so the modes of
+    :func:`derive_coulomb` (solved for any ``M0``) hold with ``M0 -> M0 + M_h``, and the two
+    extra unknowns follow from two extra equations, the components of ``omega_h`` held
+    constant (``d theta/dt = omega1``; at ``omega_h = 0`` the turning of Cxyz about the
+    vertical adds nothing, so holding the components holds the vector)::
+
+        d omega_x/dt = domega1 = 0,
+        d omega_y/dt = domega2 cos(theta) - domega3 sin(theta)
+                       - omega1 (omega2 sin(theta) + omega3 cos(theta)) = 0.
+
+    With the pivot stuck as well (``"..._pivot"``), the vertical moment ``M_piv`` and the
+    equation of :func:`derive_pivot_stuck` join: all of ``omega`` is held.
+
+    Returns
+    -------
+    dict
+        ``{"rolling", "sliding", "rolling_pivot", "sliding_pivot"}``, each mapping
+        ``"domega1".."domega3", "F_x", "F_y", "F_z", "M_hx", "M_hy"`` (with the pivot stuck
+        also ``"M_piv"``; sliding adds ``"dv_Cx", "dv_Cy"``) to expressions in the symbols
+        of :func:`derive_coulomb` (``M1`` kept general; the stuck kernels use it with the
+        rolling-resistance term removed).
+    """
+    free = derive_coulomb()
+    s, c = sp.sin(theta), sp.cos(theta)
+    out = {}
+    for pivot in (False, True):
+        extra = [M_hx, M_hy] + ([M_piv] if pivot else [])
+        # the held moments do not scale with F_z: they add to M0 (the free modes are affine
+        # in M0, derive_coulomb solved them for any M0)
+        add = {M0[0]: M0[0] + M_hx, M0[1]: M0[1] + M_hy,
+               M0[2]: M0[2] + (M_piv if pivot else 0)}
+        for name, sol in (("rolling", free.rolling), ("sliding", free.sliding)):
+            sol = {k: v.xreplace(add) for k, v in sol.items()}
+            d1, d2, d3 = sol["domega1"], sol["domega2"], sol["domega3"]
+            # the components of omega_h (and omega_z) held: d/dt along d theta/dt = omega1
+            cons = [d1, d2 * c - d3 * s - omega1 * (omega2 * s + omega3 * c)]
+            if pivot:
+                cons.append(d2 * s + d3 * c + omega1 * (omega2 * c - omega3 * s))
+            # linear in the held moments: coefficients by differentiation (no expansion
+            # of the large rational expressions of derive_coulomb)
+            A = sp.Matrix([[sp.diff(e, u) for u in extra] for e in cons])
+            b = sp.Matrix([-e.xreplace({u: 0 for u in extra}) for e in cons])
+            assert not any(A.has(u) for u in extra)
+            held = dict(zip(extra, A.LUsolve(b)))
+            res = {k: v.xreplace(held) for k, v in sol.items()}
+            res.update({str(u): held[u] for u in extra})
+            out[name + ("_pivot" if pivot else "")] = res
+    return out
+
+
+@lru_cache(maxsize=1)
+def lambdified_roll_stuck() -> dict:
+    """Numpy functions from :func:`derive_roll_stuck`, arguments as in
+    :func:`lambdified_coulomb`; they return ``[dw1, dw2, dw3, F_x, F_y, F_z, M_hx, M_hy]``
+    (with the pivot stuck ``M_piv`` follows; sliding adds ``dv_Cx, dv_Cy``)."""
+    c = derive_roll_stuck()
+    base = (ht, theta, omega1, omega2, omega3)
+    out = {}
+    for key, expr in c.items():
+        keys = ["domega1", "domega2", "domega3", "F_x", "F_y", "F_z", "M_hx", "M_hy"]
+        if key.endswith("_pivot"):
+            keys.append("M_piv")
+        if key.startswith("sliding"):
+            keys += ["dv_Cx", "dv_Cy"]
+            args = base + (v_Cx, v_Cy, mu, e_x, e_y) + M0 + M1
+        else:
+            args = base + M0 + M1
+        out[key] = sp.lambdify(args, [expr[k] for k in keys], "numpy")
+    return out
