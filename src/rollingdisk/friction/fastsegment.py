@@ -463,9 +463,13 @@ def namespace(compiled: bool = False) -> dict:
     module's): uncompiled, or compiled with numba (:func:`compiled`)."""
     ns = {**_dop.__dict__, **_cl.__dict__, **globals()}
     if compiled:
-        from rollingdisk.integrate.compile import compile_namespace
+        import rollingdisk.friction
+        import rollingdisk.integrate
+        import rollingdisk.model
+        from rollingdisk.integrate.compile import compile_namespace, source_key
 
-        return compile_namespace(ns, NAMES)
+        key = source_key(rollingdisk.model, rollingdisk.integrate, rollingdisk.friction)
+        return compile_namespace(ns, NAMES, key=key)
     for name in NAMES:
         f = ns[name]
         ns[name] = types.FunctionType(f.__code__, ns, f.__name__, f.__defaults__,

@@ -24,7 +24,7 @@ from __future__ import annotations
 import types
 from collections.abc import Iterable, Sequence
 
-__all__ = ["compile_namespace", "recompile", "numba_available"]
+__all__ = ["compile_namespace", "recompile", "numba_available", "source_key"]
 
 
 def numba_available() -> bool:
@@ -34,7 +34,32 @@ def numba_available() -> bool:
     return importlib.util.find_spec("numba") is not None
 
 
-def compile_namespace(ns: dict, names: Sequence[str], *, cache: bool = True) -> dict:
+def source_key(*modules) -> str:
+    """A short hash of the source files of ``modules`` (a package stands for every ``.py``
+    file of its folder), for :func:`compile_namespace`'s ``key``.
+
+    numba keys its on-disk cache of a function by that function's own file alone: a
+    compiled caller from the cache keeps the machine code of its callees as they were
+    when it was compiled.  After an edit of a callee in another file (a parameter array or
+    an event vector grown by one) such a caller indexed past its arrays and the process
+    died with a segmentation fault before any check could run (seen on the Coulomb loop).
+    Naming the compiled functions after the hash of every file they may call gives each
+    version of the sources its own cache entries."""
+    import hashlib
+    from pathlib import Path
+
+    digest = hashlib.sha1()
+    for m in modules:
+        path = Path(m.__file__)
+        files = sorted(path.parent.glob("*.py")) if path.name == "__init__.py" else [path]
+        for f in files:
+            digest.update(f.name.encode())
+            digest.update(f.read_bytes())
+    return digest.hexdigest()[:12]
+
+
+def compile_namespace(ns: dict, names: Sequence[str], *, cache: bool = True,
+                      key: str = "") -> dict:
     """Compile the functions ``names`` of the namespace ``ns`` in place, in that order.
 
     Parameters
@@ -48,6 +73,10 @@ def compile_namespace(ns: dict, names: Sequence[str], *, cache: bool = True) -> 
         or be numba-compilable globals already.
     cache : bool
         ``numba.njit(cache=True)`` (default).
+    key : str
+        Appended to each function's qualified name, which numba's cache is keyed by: pass
+        :func:`source_key` of every module the functions may call, so that a stale cache
+        entry is never loaded.
 
     Returns
     -------
@@ -66,7 +95,7 @@ def compile_namespace(ns: dict, names: Sequence[str], *, cache: bool = True) -> 
     for name in names:
         f = ns[name]
         g = types.FunctionType(f.__code__, ns, f.__name__, f.__defaults__, f.__closure__)
-        g.__qualname__ = f.__qualname__
+        g.__qualname__ = f"{f.__qualname__}_{key}" if key else f.__qualname__
         g.__module__ = f.__module__
         ns[name] = numba.njit(cache=cache)(g)
     return ns

@@ -20,8 +20,11 @@ import types
 import numba
 import numpy as np
 
+import rollingdisk.integrate as _integrate_pkg
+import rollingdisk.model as _model_pkg
 from rollingdisk.integrate import dop853 as _src
 from rollingdisk.integrate import taylor as _tay
+from rollingdisk.integrate.compile import source_key as _source_key
 from rollingdisk.model import equations as _eq
 
 _ns = {**_eq.__dict__, **_src.__dict__, **_tay.__dict__}
@@ -52,10 +55,15 @@ _CONTRACT = ("_tay_jet_rough", "_tay_rows_rough", "_tay_rows_smooth",
              "_tay_normal", "_tay_sample", "_tay_poly", "_tay_eval", "_tay_eval_reduced")
 
 
+#: Hash of the sources the compiled functions may call, in their names: numba's cache then
+#: never hands back a function compiled against other callees (:func:`.compile.source_key`).
+_KEY = _source_key(_model_pkg, _integrate_pkg)
+
+
 def _compile(name):
     f = _ns[name]
     g = types.FunctionType(f.__code__, _ns, f.__name__, f.__defaults__, f.__closure__)
-    g.__qualname__ = f.__qualname__
+    g.__qualname__ = f"{f.__qualname__}_{_KEY}"
     g.__module__ = f.__module__
     if name in _CONTRACT:
         d = numba.njit(cache=True, fastmath={"contract"}, error_model="numpy")(g)
