@@ -101,6 +101,11 @@ CALLS = {
     "simulate_coulomb": ((DISK, GROUND, (0.0, 0.2), Y_SMOOTH), {"max_steps": 200}),
     "slip_direction": ((DISK, GROUND, Y_SMOOTH), {}),
     "energy_balance": ((CTRAJ,), {}),
+    # past the guards: a short drop (free state: X, Y, Z, psi, theta, phi, V, omega)
+    "simulate_to_rest": ((DISK, GROUND, (0.0, 0.5), [0, 0, 1.5, 0, 0.3, 0, 0, 0, 0, 1, 0, 0]),
+                         {"e": 0.5, "max_wall": 5.0}),
+    "toss": ((DISK, 1.5, 0.0, 1.0, 0.3), {"e": 0.5, "t_end": 0.5}),
+    "toss_ensemble": ((DISK, 2, 0), {"t_end": 0.5, "max_wall": 5.0}),
 }
 
 #: Public callables not driven here, and why.

@@ -61,7 +61,16 @@ from rollingdisk.friction import (
     simulate_coulomb as simulate_coulomb,
 )
 from rollingdisk.friction import (
+    simulate_to_rest as simulate_to_rest,
+)
+from rollingdisk.friction import (
     slip_direction as slip_direction,
+)
+from rollingdisk.friction import (
+    toss as toss,
+)
+from rollingdisk.friction import (
+    toss_ensemble as toss_ensemble,
 )
 from rollingdisk.integrate import (
     DEFAULT_ATOL as DEFAULT_ATOL,
@@ -387,6 +396,9 @@ __all__ = [
     "AirDrag",
     "angular_velocity_xyz",
     "simulate_coulomb",
+    "simulate_to_rest",
+    "toss",
+    "toss_ensemble",
     "slip_direction",
     "energy_balance",
     "DISSIPATION_TERMS",

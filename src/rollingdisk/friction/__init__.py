@@ -83,6 +83,15 @@ from rollingdisk.friction.hybrid import (
 from rollingdisk.friction.hybrid import (
     slip_direction as slip_direction,
 )
+from rollingdisk.friction.motion import (
+    simulate_to_rest as simulate_to_rest,
+)
+from rollingdisk.friction.toss import (
+    toss as toss,
+)
+from rollingdisk.friction.toss import (
+    toss_ensemble as toss_ensemble,
+)
 
 __all__ = [
     "Coulomb",
@@ -99,6 +108,9 @@ __all__ = [
     "coulomb_energy",
     "rolling_state",
     "simulate_coulomb",
+    "simulate_to_rest",
+    "toss",
+    "toss_ensemble",
     "slip_direction",
     "energy_balance",
     "DISSIPATION_TERMS",

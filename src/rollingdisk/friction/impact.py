@@ -27,7 +27,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from rollingdisk.model.disk import Disk, check_ground
 from rollingdisk.model.geometry import _inertia
@@ -495,6 +494,8 @@ def _solve_law(W, gamma, e_n, e_t, mu):
                             & ((gs[:-1] == 0.0) | (gs[:-1] * gs[1:] < 0.0))):
         ga, gb = g(betas[i]), g(betas[i + 1])
         if ga * gb < 0.0:
+            from scipy.optimize import brentq  # not at import: `import rollingdisk` is lean
+
             beta = brentq(g, betas[i], betas[i + 1], xtol=1e-16, rtol=8.9e-16)
         else:  # a zero at an end (or the scan's and g's rounding disagree there)
             beta = betas[i] if abs(ga) <= abs(gb) else betas[i + 1]

@@ -467,6 +467,9 @@ def _check_inputs(disk, ground, t_span, y0, e, mu_impact, stop_at):
         y = np.asarray(y0, dtype=float)
     except (TypeError, ValueError):
         raise ParameterTypeError(f"y0 must be an array of real numbers, got {y0!r}") from None
+    except OverflowError:  # an integer beyond floating-point range
+        raise ParameterError("y0 must be a finite state: a component is beyond "
+                             "floating-point range") from None
     if y.shape not in ((10,), (12,)) or not np.all(np.isfinite(y)):
         raise ParameterError("y0 must be a finite Coulomb state (10 components, touching) "
                              "or a free-body state (12 components, in flight), got shape "
