@@ -159,7 +159,11 @@ def _coulomb_sliding(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_eps=0.0
 
 def _friction_direction(h, y, ref_X, ref_Y, u_eps):
     """``(u_x, u_y, e_x, e_y)``: the slip velocity and the friction direction ``e`` (Cxyz)
-    of :func:`_coulomb_sliding` (``sgn(u . ref) u/|u|``, or ``ref`` where ``|u| <= u_eps``)."""
+    of :func:`_coulomb_sliding`: ``sgn(u . ref) u/|u|`` where ``|u| >= u_eps``; below,
+    the direction of ``sgn(u . ref) u + (u_eps - |u|) ref``, which is ``ref`` at ``u = 0``
+    and turns continuously into ``u/|u|`` at ``|u| = u_eps`` (a jump of ``e`` there made
+    the solution depend on how an integrator steps across it: 3e-7 between DOP853 and
+    LSODA at ``u_eps`` = 1e-6; ``sgn(u . ref) u . ref >= 0`` keeps the sum from 0)."""
     psi = y[4]
     cp = np.cos(psi)
     sp = np.sin(psi)
@@ -167,11 +171,16 @@ def _friction_direction(h, y, ref_X, ref_Y, u_eps):
     n = np.sqrt(u_x * u_x + u_y * u_y)
     r_x = ref_X * cp + ref_Y * sp  # ref in Cxyz
     r_y = -ref_X * sp + ref_Y * cp
-    if n > u_eps and n > 0.0:
+    if n > 0.0:
         sig = 1.0
         if u_x * r_x + u_y * r_y < 0.0:
             sig = -1.0
-        return u_x, u_y, sig * u_x / n, sig * u_y / n
+        if n >= u_eps:
+            return u_x, u_y, sig * u_x / n, sig * u_y / n
+        w_x = sig * u_x + (u_eps - n) * r_x
+        w_y = sig * u_y + (u_eps - n) * r_y
+        m = np.sqrt(w_x * w_x + w_y * w_y)
+        return u_x, u_y, w_x / m, w_y / m
     return u_x, u_y, r_x, r_y
 
 

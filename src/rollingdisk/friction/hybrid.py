@@ -274,6 +274,13 @@ def _DOP853():
     return DOP853
 
 
+def _LSODA():
+    """scipy's LSODA class (``method="stiff"``), imported when such a run starts."""
+    from scipy.integrate import LSODA
+
+    return LSODA
+
+
 def _inertial_slip(h, z):
     u_x, u_y = _cl._slip_velocity(h, z)
     return _cl._to_inertial(z[4], u_x, u_y)
@@ -321,7 +328,7 @@ CHUNK = 1024
 #: Seconds of wall clock between two calls of ``progress`` at most (while the run steps).
 REPORT_EVERY = 0.5
 _py_seconds = 0.0
-METHODS = ("auto", "compiled", "scipy")
+METHODS = ("auto", "compiled", "scipy", "stiff")
 
 
 def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *,
@@ -376,13 +383,19 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     progress : callable, optional
         ``progress(fraction)`` with the fraction of ``t_span`` done, called about every
         percent of it and at least every :data:`REPORT_EVERY` seconds.
-    method : {"auto", "compiled", "scipy"}
-        ``"scipy"``: scipy's DOP853 driven from Python.  ``"compiled"``: the steps without
-        events in the compiled loop of :mod:`rollingdisk.friction.fastsegment` (numba;
-        20-50 times as fast; compiled once per machine, about 7 s, then loaded from
-        numba's cache in 0.4 s).  ``"auto"`` (default): scipy until the process has spent
-        :data:`PY_BUDGET` seconds on scipy-path Coulomb steps, then compiled (at once if
-        the compiled loop is loaded already) where numba is installed.  Both take scipy's
+    method : {"auto", "compiled", "scipy", "stiff"}
+        ``"scipy"``: scipy's DOP853 driven from Python.  ``"stiff"``: scipy's LSODA (it
+        switches to BDF where the problem is stiff) driven from Python, events located the
+        same way on its interpolant: for long micro-slip at the edge of the friction cone,
+        where the slip's direction relaxes at a rate of order ``mu g/|u|`` and DOP853 needs
+        about 1e5 steps per time unit (an Euler's disk run to its fall: 32,680 LSODA steps
+        in 13 s against 4,964,713 compiled DOP853 steps in 65 s, docs/friction.md).
+        ``"compiled"``: the steps without events in the compiled loop of
+        :mod:`rollingdisk.friction.fastsegment` (numba; 20-50 times as fast; compiled once
+        per machine, about 7 s, then loaded from numba's cache in 0.4 s).  ``"auto"``
+        (default): scipy until the process has spent :data:`PY_BUDGET` seconds on
+        scipy-path Coulomb steps, then compiled (at once if the compiled loop is loaded
+        already) where numba is installed.  ``"scipy"`` and ``"compiled"`` take the same
         steps and locate events the same way: transitions agree to about 1e-10.
 
     Returns
@@ -390,7 +403,8 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     Trajectory
         With ``ground`` the :class:`Coulomb` value, ``mode`` per stored point,
         ``transitions`` and ``dissipated`` (see :class:`Trajectory`); ``method`` is
-        ``"dop853"`` if the compiled loop took steps, else ``"dop853-scipy"``.
+        ``"dop853"`` if the compiled loop took steps, ``"lsoda-scipy"`` with ``"stiff"``,
+        else ``"dop853-scipy"``.
 
     Examples
     --------
@@ -606,8 +620,10 @@ class _Hybrid:
         run.side = 1.0 if self.z[5] >= 0 else -1.0
         if self.compiled:
             return self._segment_compiled(0.0)
-        solver = _DOP853()(run.rhs(self.mode), self.t, self.z, self.t1, rtol=o["rtol"],
-                           atol=o["atol"], max_step=o["max_step"])
+        stiff = self.method == "stiff"
+        solver = (_LSODA() if stiff else _DOP853())(
+            run.rhs(self.mode), self.t, self.z, self.t1, rtol=o["rtol"], atol=o["atol"],
+            max_step=o["max_step"])
         g_old = run.events(self.mode, self.z)
         clock = time.perf_counter()
         n_here = 0
@@ -618,8 +634,16 @@ class _Hybrid:
                 sol = self._dense(solver)
                 if sol is None:
                     return False
-                hit = _first_event(run, self.mode, sol, solver.t_old, solver.t, g_old,
-                                   self.h > 0 and self.guards, self.guards)
+                if stiff:  # LSODA's interpolant does not pass through the step's start
+                    hit = _start_event(run, self.mode, sol, solver.t_old, g_old, self.h > 0
+                                       and self.guards, self.guards)
+                    if hit is None:
+                        g_old = run.events(self.mode, np.asarray(sol(solver.t_old)))
+                else:
+                    hit = None
+                if hit is None:
+                    hit = _first_event(run, self.mode, sol, solver.t_old, solver.t, g_old,
+                                       self.h > 0 and self.guards, self.guards)
                 if hit is not None:
                     return self._on_event(sol, *hit)
                 g_old = self._accept(solver)
@@ -670,8 +694,7 @@ class _Hybrid:
                       W_EPS], dtype=float)
         atolv = np.full(self.z.shape[0], float(o["atol"]))
         edge = self.h > 0 and self.guards
-        active = np.array([run.armed or mode & 1 == ROLLING, c_pivot > 0.0, self.guards,
-                           edge, self.guards, c_roll > 0.0], dtype=np.bool_)
+        active = np.array(_active(run, mode, edge, self.guards), dtype=np.bool_)
         ts = np.empty(CHUNK)
         zs = np.empty((CHUNK, self.z.shape[0]))
         advance = ns["advance"]
@@ -960,7 +983,9 @@ class _Hybrid:
         return CoulombTrajectory(
             disk=self.disk, ground=self.ground, t=np.array(self.points.t), y=Z[:10],
             status=self.status, message=self.message, n_steps=self.n_steps,
-            n_rhs=self.run.n_rhs, method="dop853" if self.used_compiled else "dop853-scipy",
+            n_rhs=self.run.n_rhs,
+            method=("dop853" if self.used_compiled else "lsoda-scipy"
+                    if self.method == "stiff" else "dop853-scipy"),
             t_event=self.t_event,
             wall_time=wall, mode=np.array(self.points.mode),
             transitions=tuple(self.transitions),
@@ -1048,12 +1073,30 @@ def _roll_turn(run, mode, z):
     return _cl._to_inertial(psi, math.cos(best[0]), math.sin(best[0]))
 
 
+def _active(run, mode, edge, guards):
+    """Which of :meth:`_Run.events` are looked for: the mode's end (in sliding once the
+    slip passed its floor), the pivot's and the rolling resistance's if on, the guards."""
+    return [run.armed or mode & 1 == ROLLING, run.c_pivot > 0.0, guards, edge, guards,
+            run.c_roll > 0.0]
+
+
+def _start_event(run, mode, sol, ta, g_old, edge, guards):
+    """An event at the very start ``ta`` of a step whose interpolant does not pass through
+    the accepted state (LSODA's): one that is ``> 0`` at the accepted state and ``<= 0`` on
+    the interpolant at ``ta``, as ``(index, ta)``; else None."""
+    active = _active(run, mode, edge, guards)
+    g0 = run.events(mode, np.asarray(sol(ta)))
+    for k in range(len(g0)):
+        if active[k] and g_old[k] > 0.0 and g0[k] <= 0.0:
+            return k, ta
+    return None
+
+
 def _first_event(run, mode, sol, ta, tb, g_old, edge, guards):
     """The first event in ``(ta, tb]`` on the dense output ``sol``: ``(index, time)``."""
     from scipy.optimize import brentq
 
-    active = [run.armed or mode & 1 == ROLLING, run.c_pivot > 0.0, guards, edge, guards,
-              run.c_roll > 0.0]
+    active = _active(run, mode, edge, guards)
     ts = np.linspace(ta, tb, _N_SAMPLE)
     prev = g_old
     best = None
