@@ -133,8 +133,8 @@ class EulerDisk:
         resistance, integrated by LSODA.  ``"coulomb"``: set-valued Coulomb friction with
         no constant to choose (``creep`` and ``omega_eps`` unused): the disk rolls while
         ``|F_t| <= mu F_z`` and slides at ``mu F_z`` otherwise, the transitions located
-        (:func:`rollingdisk.simulate_coulomb`, its compiled loop; the late micro-slip costs
-        about 1e5 steps per time unit); rolling resistance ``-c F_z omega_h/|omega_h|``,
+        (:func:`rollingdisk.simulate_coulomb`, its compiled loop; the toy's late micro-slip
+        takes 7.5e7 steps); rolling resistance ``-c F_z omega_h/|omega_h|``,
         set-valued; air: the squeeze film only.
 
     A toy of any other size: :meth:`from_disk` (e.g. a disk of
@@ -735,8 +735,8 @@ def _locate(dense, event, t_a, t_b):
 
 
 #: Tolerances of :func:`run_euler_disk` by friction law: LSODA's on the creep law,
-#: DOP853's on Coulomb friction (energy balance 1.6e-9 over the tests' alpha0 = 0.1 run;
-#: 7.8e-8 after the 1.2e8 steps of the toy's micro-slip, docs/friction.md).
+#: DOP853's on Coulomb friction (energy balance 2.2e-9 over the toy's 7.5e7 steps,
+#: docs/friction.md).
 TOLERANCES = {"creep": (1e-9, 1e-11), "coulomb": (1e-10, 1e-12)}
 
 
@@ -760,8 +760,9 @@ def run_euler_disk(toy: EulerDisk | None = None, *, alpha_end: float = 1e-3,
         (default 1e-9, 1e-11), DOP853's on Coulomb friction (default 1e-10, 1e-12;
         :data:`TOLERANCES`).
     max_steps : int
-        Step budget, ``>= 1`` (Coulomb friction: its micro-slip costs about 1e5 steps per
-        time unit; the toy's 1.2e8 steps reached t = 1199 of about 1600, docs/friction.md).
+        Step budget, ``>= 1`` (Coulomb friction: the toy's micro-slip near its end takes
+        7.5e7 steps, about 8 minutes, so pass ``max_steps=3 * 10**8`` and a wall budget of
+        half an hour; docs/friction.md).
     max_wall_time : float
         Wall-clock budget [s], ``> 0``.
     fit_window : (float, float), optional
