@@ -136,12 +136,24 @@ def _slip_direction(h, mu_k, coeffs, y, sz=None):
             np.ascontiguousarray(y[:10], dtype=float), 0.0 if sz is None else float(sz),
             sz is None, 145)
         return None if a != a else (math.cos(a), math.sin(a))
-    from scipy.optimize import brentq
 
     def parts(a):
         ex, ey = math.cos(a), math.sin(a)
         ax, ay = _slip_accel(h, mu_k, coeffs, y, ex, ey, sz)
         return ex * ay - ey * ax, ex * ax + ey * ay
+
+    a = _direction_scan(parts)
+    return None if a is None else (math.cos(a), math.sin(a))
+
+
+def _direction_scan(parts):
+    """The angle ``a`` of the direction ``d = (cos a, sin a)`` in which a rate starts to
+    grow along ``+d`` from 0: ``parts(a)`` gives ``(d x rate, d . rate)``; a scan of 144
+    intervals, ``brentq`` on ``d x rate = 0`` in each sign change, and among the roots
+    with ``d . rate > 0`` the one of largest rate.  ``None`` if there is none.  (The slip
+    direction at a rolling -> sliding transition, and the direction in which the rolling
+    resistance lets ``omega_h`` go.)"""
+    from scipy.optimize import brentq
 
     grid = np.linspace(0.0, 2.0 * math.pi, 145)
     vals = [parts(a)[0] for a in grid]
@@ -157,9 +169,7 @@ def _slip_direction(h, mu_k, coeffs, y, sz=None):
         along = parts(a)[1]
         if along > 0.0 and (best is None or along > best[1]):
             best = (a, along)
-    if best is None:
-        return None
-    return math.cos(best[0]), math.sin(best[0])
+    return None if best is None else best[0]
 
 
 def energy_balance(traj: Trajectory) -> float:
@@ -1042,8 +1052,6 @@ def _roll_turn(run, mode, z):
     finds the slip direction: a scan of the angle, ``brentq`` on ``d x d omega_h/dt = 0``,
     among the roots with ``d . d omega_h/dt > 0`` the one of largest rate; ``None`` if
     there is none."""
-    from scipy.optimize import brentq
-
     psi, theta, w1, w2, w3 = z[4], z[5], z[7], z[8], z[9]
     s, c = math.sin(theta), math.cos(theta)
     wz = w2 * s + w3 * c
@@ -1054,23 +1062,8 @@ def _roll_turn(run, mode, z):
         ax, ay = dy[7], dy[8] * c - dy[9] * s - w1 * wz
         return ex * ay - ey * ax, ex * ax + ey * ay
 
-    grid = np.linspace(0.0, 2.0 * math.pi, 145)
-    vals = [parts(a)[0] for a in grid]
-    best = None
-    for i in range(grid.size - 1):
-        f0, f1 = vals[i], vals[i + 1]
-        if f0 == 0.0:
-            a = grid[i]
-        elif f0 * f1 < 0.0:
-            a = brentq(lambda x: parts(x)[0], grid[i], grid[i + 1], xtol=1e-15, rtol=8.9e-16)
-        else:
-            continue
-        along = parts(a)[1]
-        if along > 0.0 and (best is None or along > best[1]):
-            best = (a, along)
-    if best is None:
-        return None
-    return _cl._to_inertial(psi, math.cos(best[0]), math.sin(best[0]))
+    a = _direction_scan(parts)
+    return None if a is None else _cl._to_inertial(psi, math.cos(a), math.sin(a))
 
 
 def _active(run, mode, edge, guards):
