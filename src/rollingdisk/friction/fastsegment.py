@@ -532,29 +532,15 @@ def matches_python(ns) -> bool:
 
 
 def _marker():
-    """The file whose presence says numba's cache holds this loop for these sources."""
-    import hashlib
-    import importlib.util
-    import sys
-    from pathlib import Path
-
-    from rollingdisk.friction import ground as _gr
-    from rollingdisk.integrate import dop853_coefficients as _co
+    """The file whose presence says numba's cache holds this loop for these sources (named
+    as the compiled functions are: :func:`rollingdisk.integrate.compile.marker_key`)."""
+    import rollingdisk.friction
+    import rollingdisk.integrate
+    import rollingdisk.model
     from rollingdisk.integrate import jit as _jit
-    from rollingdisk.model import geometry as _ge
+    from rollingdisk.integrate.compile import marker_key
 
-    parts = [sys.version]
-    spec = importlib.util.find_spec("numba")
-    files = [Path(m.__file__) for m in (_cl, _dop, _gr, _co, _ge)] + [Path(__file__)]
-    if spec is not None and spec.origin:
-        files.append(Path(spec.origin))
-    for f in files:
-        try:
-            st = f.stat()
-            parts.append(f"{f}:{st.st_size}:{st.st_mtime_ns}")
-        except OSError:
-            parts.append(f"{f}:missing")
-    key = hashlib.sha1("|".join(parts).encode()).hexdigest()[:16]
+    key = marker_key(rollingdisk.model, rollingdisk.integrate, rollingdisk.friction)
     return _jit._folder() / f"rollingdisk-coulomb-{key}.ready"
 
 
@@ -567,11 +553,11 @@ def cache_ready() -> bool:
 
 
 def _mark_ready():
+    from rollingdisk.integrate.compile import write_marker
+
     try:
-        m = _marker()
-        m.parent.mkdir(parents=True, exist_ok=True)
-        m.write_text("numba cache of rollingdisk's Coulomb loop is filled\n")
-    except OSError:
+        write_marker(_marker(), "numba cache of rollingdisk's Coulomb loop is filled\n")
+    except OSError:  # no cache folder to be had
         pass
 
 

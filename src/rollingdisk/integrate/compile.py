@@ -24,7 +24,12 @@ from __future__ import annotations
 import types
 from collections.abc import Iterable, Sequence
 
-__all__ = ["compile_namespace", "recompile", "numba_available", "source_key"]
+__all__ = ["compile_namespace", "recompile", "numba_available", "source_key", "marker_key",
+           "write_marker"]
+
+#: source_key by module names: the sources do not change under a running process, and the
+#: hash is asked for on every compiled-or-not decision.
+_KEYS: dict = {}
 
 
 def numba_available() -> bool:
@@ -48,14 +53,52 @@ def source_key(*modules) -> str:
     import hashlib
     from pathlib import Path
 
-    digest = hashlib.sha1()
-    for m in modules:
-        path = Path(m.__file__)
-        files = sorted(path.parent.glob("*.py")) if path.name == "__init__.py" else [path]
-        for f in files:
-            digest.update(f.name.encode())
-            digest.update(f.read_bytes())
-    return digest.hexdigest()[:12]
+    names = tuple(m.__name__ for m in modules)
+    if names not in _KEYS:
+        digest = hashlib.sha1()
+        for m in modules:
+            path = Path(m.__file__)
+            files = sorted(path.parent.glob("*.py")) if path.name == "__init__.py" else [path]
+            for f in files:
+                digest.update(f.name.encode())
+                digest.update(f.read_bytes())
+        _KEYS[names] = digest.hexdigest()[:12]
+    return _KEYS[names]
+
+
+def marker_key(*modules) -> str:
+    """The name of a filled cache's mark for code compiled from ``modules``: their
+    :func:`source_key` (the key in the compiled functions' names) with the Python version
+    and numba's (its ``__init__.py``'s size and time), so that a mark never says "ready"
+    for a cache the compiled names do not find."""
+    import hashlib
+    import importlib.util
+    import sys
+    from pathlib import Path
+
+    parts = [sys.version, source_key(*modules)]
+    spec = importlib.util.find_spec("numba")
+    if spec is not None and spec.origin:
+        try:
+            st = Path(spec.origin).stat()
+            parts.append(f"{spec.origin}:{st.st_size}:{st.st_mtime_ns}")
+        except OSError:
+            parts.append("numba:missing")
+    return hashlib.sha1("|".join(parts).encode()).hexdigest()[:16]
+
+
+def write_marker(path, text: str) -> None:
+    """Create the mark ``path`` whole or not at all (a temporary file renamed over it); a
+    folder that cannot be written leaves no mark (the next run compiles again)."""
+    import os
+
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_name(f"{path.name}.{os.getpid()}.tmp")
+        tmp.write_text(text)
+        os.replace(tmp, path)
+    except OSError:
+        pass
 
 
 def compile_namespace(ns: dict, names: Sequence[str], *, cache: bool = True,

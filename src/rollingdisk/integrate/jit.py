@@ -38,20 +38,19 @@ no compiled code, the Taylor part starts as uncompiled DOP853 (the Taylor method
 only compiled) and goes on with the Taylor method from the chunk at which the compiled
 code is loaded.
 
-The mark is a file named after the sources (path, size and modification time of the
-compiled modules -- ``integrate/dop853.py``, ``taylor.py``, ``numba_core.py``, ...,
-``model/equations.py``, ``model/geometry.py`` -- and of numba's own ``__init__.py``) and
-the Python version, in the folder of numba's cache (``NUMBA_CACHE_DIR`` or the package's
-``__pycache__``, else a user cache folder).  Two processes may start a compiler at once:
-the compiler takes an exclusive lock (``fcntl.flock``) and a second one leaves at once;
-numba itself writes its cache files atomically.
+The mark is a file named after the sources (the hash of ``integrate/`` and ``model/`` that
+also names the compiled functions, :func:`rollingdisk.integrate.compile.source_key`),
+numba's own ``__init__.py`` and the Python version, in the folder of numba's cache
+(``NUMBA_CACHE_DIR`` or the package's ``__pycache__``, else a user cache folder).  Two
+processes may start a compiler at once: the compiler takes an exclusive lock
+(``fcntl.flock``) and a second one leaves at once; numba itself writes its cache files
+atomically.
 
 Run as ``python -m rollingdisk.integrate.jit`` it is that background compiler.
 """
 
 from __future__ import annotations
 
-import hashlib
 import importlib.util
 import os
 import sys
@@ -117,21 +116,11 @@ def _folder() -> Path:
 
 
 def _key() -> str:
-    parts = [sys.version]
-    spec = importlib.util.find_spec("numba")
-    model = _PKG.parent / "model"
-    files = [_PKG / "dop853.py", _PKG / "dop853_coefficients.py", _PKG / "taylor.py",
-             _PKG / "roots.py", _PKG / "events.py", _PKG / "numba_core.py",
-             model / "equations.py", model / "geometry.py"]
-    if spec is not None and spec.origin:
-        files.append(Path(spec.origin))
-    for f in files:
-        try:
-            st = f.stat()
-            parts.append(f"{f}:{st.st_size}:{st.st_mtime_ns}")
-        except OSError:
-            parts.append(f"{f}:missing")
-    return hashlib.sha1("|".join(parts).encode()).hexdigest()[:16]
+    import rollingdisk.integrate
+    import rollingdisk.model
+    from rollingdisk.integrate.compile import marker_key
+
+    return marker_key(rollingdisk.model, rollingdisk.integrate)
 
 
 def marker() -> Path:
@@ -149,14 +138,9 @@ def ready() -> bool:
 
 def mark_ready() -> None:
     """Record that the cache is ready (called after a successful compile or load)."""
-    m = marker()
-    try:
-        m.parent.mkdir(parents=True, exist_ok=True)
-        tmp = m.with_name(f"{m.name}.{os.getpid()}.tmp")
-        tmp.write_text("numba cache of rollingdisk's integrator is filled\n")
-        os.replace(tmp, m)
-    except OSError:
-        pass
+    from rollingdisk.integrate.compile import write_marker
+
+    write_marker(marker(), "numba cache of rollingdisk's integrator is filled\n")
 
 
 def start_background_compile() -> bool:
