@@ -375,16 +375,10 @@ def _sliding_roll_stuck_solve(h, mu, e_x, e_y, theta, w1, w2, w3, M0x, M0y, M0z,
     k1 = _inertia(h)[0]
     k2 = 0.5
     G1 = (k2 * w2 - k1 * w3 * p) * w3
-    G3 = (-k2 * w2 + k1 * w3 * p) * w1
     q = mu * z_P * e_y + y_P + M1x
-    Lx = -(G1 + M0x + q * (1.0 + z_P * w1 * w1))  # numerator of d1 in _sliding_solve
-    F_z = 1.0 + z_P * w1 * w1  # eq. (11) with d1 = 0
-    F_x = -mu * F_z * e_x
-    F_y = -mu * F_z * e_y
-    My = M0y + F_z * M1y
-    Mz = M0z + F_z * M1z
-    d2 = (-F_x + c * My + s * Mz) / k2  # eq. (9)_2
-    d3 = (G3 + ht * F_x - s * My + c * Mz) / k1  # eq. (9)_3
+    Lx = -(G1 + M0x + q * (1.0 + z_P * w1 * w1))  # cancels the numerator of d1 in it
+    _, d2, d3, F_x, F_y, F_z = _sliding_solve(h, mu, e_x, e_y, theta, w1, w2, w3, M0x + Lx,
+                                              M0y, M0z, M1x, M1y, M1z)
     r2y, r3y = c / k2, -s / k1
     r2z, r3z = s / k2, c / k1
     Ly, Lz = _hold_h(theta, w1, w2, w3, d2, d3, r2y, r3y, r2z, r3z, pivot_stuck)
