@@ -136,6 +136,17 @@ def _tick(v: float) -> str:
     return f"{float(f'{v:.6g}'):g}"
 
 
+def _path_axes(ax, disk, x_name: str, y_name: str) -> None:
+    """Axes of a path on the plane: equal aspect, lengths shown in the disk's units (SI
+    for a disk with a physical size), labelled ``x_name``, ``y_name``."""
+    ax.set_aspect("equal", adjustable="datalim")
+    f = si_factor(disk, "length")
+    _show_scaled(ax.xaxis, f)
+    _show_scaled(ax.yaxis, f)
+    ax.set_xlabel(axis_label(x_name, "length", disk))
+    ax.set_ylabel(axis_label(y_name, "length", disk))
+
+
 def _show_scaled(axis, factor: float, ticks=None) -> None:
     """Show the data of ``axis`` (a matplotlib Axis, in the paper's units or radians)
     multiplied by ``factor``: round tick values in the shown units, labelled in them.
@@ -699,13 +710,7 @@ def plot_paths(traj, ax=None, *, title: str | None = None) -> dict:
     (lp,) = ax.plot(XP, YP, color="tab:red", lw=1.0, label="P (contact)")
     start = ax.scatter([XC[0], XP[0]], [YC[0], YP[0]], color=["tab:blue", "tab:red"],
                        marker="o", s=16, zorder=3)
-    ax.set_aspect("equal", adjustable="datalim")
-    disk = disk_of(traj)
-    f = si_factor(disk, "length")
-    _show_scaled(ax.xaxis, f)
-    _show_scaled(ax.yaxis, f)
-    ax.set_xlabel(axis_label("$X$", "length", disk))
-    ax.set_ylabel(axis_label("$Y$", "length", disk))
+    _path_axes(ax, disk_of(traj), "$X$", "$Y$")
     ax.legend(loc="best", fontsize=LEGEND_FONTSIZE)
     ax.set_title(title if title is not None else "paths on the plane")
     return {"ax": ax, "C": lc, "P": lp, "start": start}
@@ -905,13 +910,7 @@ def plot_rosette(ex, ax=None, *, n_periods: int = 20, title: str | None = None) 
     X, Y = ex.contact_path(t)
     (line,) = ax.plot(X, Y, color="tab:red", lw=0.7)
     ax.plot(X[:1], Y[:1], "o", color="tab:red", ms=3)
-    ax.set_aspect("equal", adjustable="datalim")
-    disk = disk_of(ex)
-    f = si_factor(disk, "length")
-    _show_scaled(ax.xaxis, f)
-    _show_scaled(ax.yaxis, f)
-    ax.set_xlabel(axis_label("$X_P$", "length", disk))
-    ax.set_ylabel(axis_label("$Y_P$", "length", disk))
+    _path_axes(ax, disk_of(ex), "$X_P$", "$Y_P$")
     ax.set_title(title if title is not None else
                  rf"contact point, {n_periods} periods, $\Delta\psi$ = "
                  f"{math.degrees(ex.delta_psi):.4g}°")
