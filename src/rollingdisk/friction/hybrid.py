@@ -931,12 +931,8 @@ class _Hybrid:
             W = _inertial_omega_h(z)
             n = math.hypot(*W)
             if n > STICK_TOL * (1.0 + float(np.linalg.norm(z[7:10]))):
-                if self.last_turn is not None and t - self.last_turn <= 1e-12 * (1.0 + abs(t)):
-                    self.status = "failed"
-                    self.message = (f"stuck at t = {t:.12g}: omega_h turned twice at the "
-                                    "same time (a discontinuity of the equations)")
+                if self._turned_twice("omega_h"):
                     return False
-                self.last_turn = t
                 run.rref = (W[0] / n, W[1] / n)  # turned without vanishing: no transition
                 return True
             new = self._roll_settles(self.mode)
@@ -945,20 +941,29 @@ class _Hybrid:
         self.mode = new
         return True
 
+    def _turned_twice(self, what: str) -> bool:
+        """A reference direction turns at ``self.t``: True (status "failed", message set) if
+        one turned at the same time already (a discontinuity of the equations, which
+        would turn it for ever), else remember the time."""
+        t = self.t
+        if self.last_turn is not None and t - self.last_turn <= 1e-12 * (1.0 + abs(t)):
+            self.status = "failed"
+            self.message = (f"stuck at t = {t:.12g}: {what} turned twice at the same time "
+                            "(a discontinuity of the equations)")
+            return True
+        self.last_turn = t
+        return False
+
     def _slip_turned(self):
         """At a zero of ``u . u_ref`` with the slip not at rest: a new slip reference
         (True), or stuck (False, status set); None if the slip came to rest."""
-        z, t = self.z, self.t
+        z = self.z
         U = _inertial_slip(self.h, z)
         n = math.hypot(*U)
         if n <= STICK_TOL * (1.0 + math.hypot(z[2], z[3])):
             return None
-        if self.last_turn is not None and t - self.last_turn <= 1e-12 * (1.0 + abs(t)):
-            self.status = "failed"
-            self.message = (f"stuck at t = {t:.12g}: the slip direction turned twice at "
-                            "the same time (a discontinuity of the equations)")
+        if self._turned_twice("the slip direction"):
             return False
-        self.last_turn = t
         # u turned across the reference direction without vanishing: a new reference, no
         # transition
         self.run.ref = (U[0] / n, U[1] / n)
