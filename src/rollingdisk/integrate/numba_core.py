@@ -41,9 +41,10 @@ _INTEGRATOR = ("_illinois_converged", "_illinois_trial", "_illinois_update", "_r
                "integrate")
 #: The Taylor integrator of _taylor.py (``simulate(method="taylor")``) and the reduced jets,
 #: sampler and root finder of the sweeps' batch Taylor kernel (:mod:`.batch`).
-_TAYLOR = ("_tay_jet_rough", "_tay_rows_rough", "_tay_rows_smooth",
+_TAYLOR = ("_signed_h", "_where", "_tay_jet_rough", "_tay_rows_rough", "_tay_rows_smooth",
            "_tay_quadratures_smooth", "_tay_jet", "_tay_jet4_rough", "_tay_jet4_smooth",
-           "_tay_normal", "_tay_sample", "_tay_poly", "_tay_poly_root", "_tay_eval",
+           "_energy_sc", "_tay_normal", "_tay_sample", "_tay_poly", "_tay_poly_d", "_tay_poly_root",
+           "_tay_eval",
            "_tay_eval_reduced", "_tay_step_size", "_tay_locate", "_tay_integrate")
 _DISPATCHERS = _KERNELS + _INTEGRATOR + _TAYLOR
 #: The Taylor jet and its Horner evaluation: multiply-adds fused (``contract``: one rounding
@@ -52,7 +53,13 @@ _DISPATCHERS = _KERNELS + _INTEGRATOR + _TAYLOR
 #: raising ZeroDivisionError on every division): the jet 0.97 -> 0.71 ms per 1860 calls.
 _CONTRACT = ("_tay_jet_rough", "_tay_rows_rough", "_tay_rows_smooth",
              "_tay_quadratures_smooth", "_tay_jet", "_tay_jet4_rough", "_tay_jet4_smooth",
-             "_tay_normal", "_tay_sample", "_tay_poly", "_tay_eval", "_tay_eval_reduced")
+             "_tay_normal", "_tay_sample", "_tay_poly", "_tay_poly_d", "_tay_eval",
+             "_tay_eval_reduced")
+#: numpy's error model without ``contract``: the step size takes the logarithm of a
+#: quotient by a norm that may be 0 (giving inf, which ``_where`` then discards), the
+#: root finder's Newton step divides by a derivative that may be 0 (a step out of the
+#: bracket, which bisects instead).
+_NUMPY_ERRORS = ("_tay_step_size", "_tay_poly_root")
 
 
 #: Hash of the sources the compiled functions may call, in their names: numba's cache then
@@ -67,6 +74,8 @@ def _compile(name):
     g.__module__ = f.__module__
     if name in _CONTRACT:
         d = numba.njit(cache=True, fastmath={"contract"}, error_model="numpy")(g)
+    elif name in _NUMPY_ERRORS:
+        d = numba.njit(cache=True, error_model="numpy")(g)
     else:
         d = numba.njit(cache=True)(g)
     _ns[name] = d  # the others call the compiled version

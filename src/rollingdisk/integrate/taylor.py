@@ -54,6 +54,18 @@ from rollingdisk.model.outcomes import (
 _TAY_SAMPLES = 4
 
 
+def _signed_h(h, th0):
+    """``h~ = h sgn(theta)`` with ``sgn(0) = +1`` (eq. 4, ``_geometry``): the half-thickness
+    on the side of the contact."""
+    return h if th0 >= 0.0 else -h
+
+
+def _where(c, a, b):
+    """``a if c else b`` with both evaluated: written so, a choice is traceable into the
+    vector lanes of :mod:`.lanes` (a select there)."""
+    return a if c else b
+
+
 def taylor_order(tol: float) -> int:
     """The order of the method for tolerance ``tol``: ``ceil(-ln(tol)/2) + 1`` in [4, 40]."""
     return int(min(40, max(4, math.ceil(-math.log(tol) / 2.0) + 1)))
@@ -72,7 +84,7 @@ def _tay_rows_rough(h, th, w1, w2, w3, A, P):
     dependent ones (the step is bound by throughput, not by the latency of each sum).
     ``k theta_k = omega1_{k-1}`` (eq. 2) replaces the derivative of the series of theta.
     """
-    ht = h if th[0] >= 0.0 else -h  # h~ = h sgn(theta), sgn(0) = +1 (eq. 4, _geometry)
+    ht = _signed_h(h, th[0])
     h2 = h * h
     S, C, T, PW3, L, G, H = A[0], A[1], A[2], A[3], A[4], A[5], A[6]
     e1 = 1.0 / (15.0 + 16.0 * h2)
@@ -145,7 +157,7 @@ def _tay_rows_smooth(h, th, w1, w2, w3, A, P):
     ``D = k1 + y_P^2`` (the quotient by back-substitution, ``y_P^2`` kept as a series),
     ``d2 = 0``, ``d3 = (-k2 w2 + k1 w3 p) w1 / k1``.
     """
-    ht = h if th[0] >= 0.0 else -h
+    ht = _signed_h(h, th[0])
     k1 = _inertia(h)[0]  # eq. (10)
     k2 = 0.5
     S, C, T, PW3, YP, ZP = A[0], A[1], A[2], A[3], A[4], A[5]
@@ -236,7 +248,7 @@ def _tay_jet_rough(h, y, J, A, P):
     """
     for i in range(y.shape[0]):
         J[i, 0] = y[i]
-    ht = h if y[3] >= 0.0 else -h  # h~ = h sgn(theta), sgn(0) = +1 (eq. 4, _geometry)
+    ht = _signed_h(h, y[3])
     h2 = h * h
     S, C, T, Q = A[0], A[1], A[2], A[3]
     PW3, ZP, SP, CP = A[4], A[6], A[7], A[8]
@@ -377,6 +389,23 @@ def _tay_jet(rough, h, y, J, A, P):
     _tay_quadratures_smooth(J, A, P)
 
 
+def _energy_sc(rough, ht, k1, k2, s, c, y):
+    """E of the reduced state ``y`` with ``sin theta = s``, ``cos theta = c`` given (eqs. 13,
+    37, 7; a = 1); on smooth ground the part of E that does not contain the constant
+    V_X, V_Y (conserved by itself)."""
+    w1, w2, w3 = y[1], y[2], y[3]
+    y_P = s - ht * c  # eq. (4)
+    z_P = -(c + ht * s)
+    v_Cz = -w1 * y_P  # eq. (7)
+    if rough:
+        v_Cx = w2 - ht * w3  # eq. (37)
+        v_Cy = w1 * z_P
+        kin = 0.5 * (v_Cx * v_Cx + v_Cy * v_Cy + v_Cz * v_Cz)
+    else:
+        kin = 0.5 * v_Cz * v_Cz
+    return kin + 0.5 * k1 * (w1 * w1 + w3 * w3) + 0.5 * k2 * w2 * w2 - z_P
+
+
 def _tay_normal(h, J, A, P, N):
     """``N[0..P-1]``: the series of the normal force ``F_z = 1 + z_P omega1^2 - y_P
     d omega1/dt`` (eq. 11) along the step, from the jet of :func:`_tay_jet4_rough` or
@@ -384,7 +413,7 @@ def _tay_normal(h, J, A, P, N):
     ``A[1]``, to order P - 1); ``A[11..13]`` are work rows (the reduced jets use rows
     0..10).  The lift-off guard as a polynomial: sampled and located inside a step at the
     cost of a Horner sum."""
-    ht = h if J[0, 0] >= 0.0 else -h
+    ht = _signed_h(h, J[0, 0])
     S, C = A[0], A[1]
     YP, ZP, W = A[11], A[12], A[13]
     w1 = J[1]
@@ -409,7 +438,7 @@ def _tay_sample(h, J, A, P, x, v):
     in ``A[0]``, ``A[1]`` and of d omega1/dt), F_z from them by eq. (11): ``1 + z_P omega1^2
     - y_P d omega1/dt``.  The sines come from their series (to order P - 1), not from
     ``sin(theta(x))``: no transcendental call per sample."""
-    ht = h if J[0, 0] >= 0.0 else -h
+    ht = _signed_h(h, J[0, 0])
     th = J[0, P]
     w1 = J[1, P]
     w2 = J[2, P]
@@ -443,17 +472,63 @@ def _tay_poly(c, deg, x):
     return v
 
 
+def _tay_poly_d(c, deg, x):
+    """``(p(x), p'(x), e)`` of ``p = sum_k c[k] x^k``, k = 0..deg, by Horner's rule, with
+    ``e = sum_k |c[k]| |x|^k``: the rounding error of the sum is at most about
+    ``2 deg u e`` (u = 2^-53; Higham, Accuracy and Stability, sec. 5.1)."""
+    p = c[deg]
+    d = 0.0
+    e = abs(p)
+    ax = abs(x)
+    for k in range(deg - 1, -1, -1):
+        d = d * x + p
+        p = p * x + c[k]
+        e = e * ax + abs(c[k])
+    return p, d, e
+
+
 def _tay_poly_root(c, deg, sg, off, xa, xb, fa, fb):
     """Root in (xa, xb] of ``f(x) = sg * poly(c)(x) - off`` with ``f(xa)``, ``f(xb)`` of
-    opposite signs (or ``f(xb) = 0``): Illinois regula falsi (:mod:`.roots`) on the
-    polynomial, to round-off.  Returns the end of the final bracket on the side of ``xa``."""
-    flag = 0
+    opposite signs (or ``f(xb) = 0``); returns the last admissible point found (``f`` of
+    the sign of ``fa``, nonzero) within round-off of the root.
+
+    Newton's method kept in the bracket: on a polynomial the derivative comes with the
+    Horner sum, every evaluation narrows the bracket ``[xa, xb]``, and a step that leaves
+    it bisects.  It stops where ``|f|`` is below the rounding error of its own Horner sum
+    (:func:`_tay_poly_d`): closer than that the sign of ``f`` is noise, and near a slow
+    crossing that band is far wider than the spacing of doubles.  If that last point is
+    past the root, it steps back toward ``xa`` by doubling distances to the first
+    admissible point.  From the secant point it takes 3-6 evaluations where the Illinois
+    rule (:mod:`rollingdisk.integrate.roots`, which narrows the bracket to the spacing of
+    doubles) took 13-46 on the sweeps' theta crossings."""
+    x = _illinois_trial(xa, xb, fa, fb)
     for _ in range(ILLINOIS_MAXITER):
         if _illinois_converged(xa, xb):
             break
-        xc = _illinois_trial(xa, xb, fa, fb)
-        fc = sg * _tay_poly(c, deg, xc) - off
-        xa, xb, fa, fb, flag = _illinois_update(xa, xb, fa, fb, xc, fc, flag)
+        p, dp, e = _tay_poly_d(c, deg, x)
+        fx = sg * p - off
+        ok = (fx > 0.0) == (fa > 0.0) and fx != 0.0
+        if ok:
+            xa = x
+        else:
+            xb = x
+        if abs(fx) <= 2.3e-16 * (2.0 * deg * e + abs(off)):
+            if not ok:
+                step = 2e-16 * max(1.0, abs(x))
+                for _ in range(ILLINOIS_MAXITER):
+                    xc = x - step
+                    if xc <= xa:
+                        break
+                    fc = sg * _tay_poly(c, deg, xc) - off
+                    if (fc > 0.0) == (fa > 0.0) and fc != 0.0:
+                        xa = xc
+                        break
+                    step *= 2.0
+            break
+        xn = x - fx / (sg * dp)
+        if not (xa < xn < xb):
+            xn = 0.5 * (xa + xb)
+        x = xn
     return xa
 
 
@@ -496,14 +571,11 @@ def _tay_step_size(J, P, atolv, rtol):
             am = max(am, abs(J[i, P - 1]))
             bm = max(bm, abs(J[i, P]))
             at = min(at, atolv[i])
-    scale = 1.0 if rtol * xm <= at else xm
+    scale = _where(rtol * xm <= at, 1.0, xm)
     # in logarithms: two logs and one exp instead of two powers and an exp
-    lr = np.inf
-    if am > 0.0:
-        lr = math.log(scale / am) / (P - 1)
-    if bm > 0.0:
-        lr = min(lr, math.log(scale / bm) / P)
-    return math.exp(lr - 2.0 - 0.7 / (P - 1))
+    la = _where(am > 0.0, math.log(scale / am) / (P - 1), np.inf)
+    lb = _where(bm > 0.0, math.log(scale / bm) / P, np.inf)
+    return math.exp(min(la, lb) - 2.0 - 0.7 / (P - 1))
 
 
 def _tay_locate(rough, h, J, P, side, kg, xa, xb, ga, gb, ytmp, g):
