@@ -24,10 +24,19 @@ import contextlib
 import numba
 import numpy as np
 
+from rollingdisk.integrate.lanes import (
+    LANES,
+    MAX_ORDER,
+    _lane_jet_rough,
+    _lane_jet_smooth,
+    _lane_samples,
+)
 from rollingdisk.integrate.numba_core import (
     _A,
     _B,
+    _KEY,
     _NS,
+    _energy_sc,
     _error_norm,
     _geometry,
     _guards,
@@ -50,6 +59,19 @@ from rollingdisk.model.outcomes import (
     LIFT_OFF,
     outcome,
 )
+
+
+def _jit(**kw):
+    """``numba.njit(cache=True, **kw)`` under a name that carries the hash of the sources the
+    function may call (:func:`rollingdisk.integrate.compile.source_key`): numba's cache is
+    keyed by this file alone, and a kernel cached before an edit of taylor.py or lanes.py
+    (which it inlines or traces) would otherwise be loaded stale."""
+
+    def deco(f):
+        f.__qualname__ = f"{f.__qualname__}_{_KEY}"
+        return numba.njit(cache=True, **kw)(f)
+
+    return deco
 
 
 def set_threads(n: int) -> int:
@@ -79,32 +101,14 @@ COLUMNS = ("status", "t_end", "max_dtheta", "n_crossings", "period", "t_grow_lo"
 NCOL = len(COLUMNS)
 
 
-@numba.njit(cache=True)
-def _energy_sc(rough, ht, k1, k2, s, c, y):
-    """E of the reduced state ``y`` with ``sin theta = s``, ``cos theta = c`` given (eqs. 13,
-    37, 7; a = 1); on smooth ground the part of E that does not contain the constant
-    V_X, V_Y (conserved by itself)."""
-    w1, w2, w3 = y[1], y[2], y[3]
-    y_P = s - ht * c  # eq. (4)
-    z_P = -(c + ht * s)
-    v_Cz = -w1 * y_P  # eq. (7)
-    if rough:
-        v_Cx = w2 - ht * w3  # eq. (37)
-        v_Cy = w1 * z_P
-        kin = 0.5 * (v_Cx * v_Cx + v_Cy * v_Cy + v_Cz * v_Cz)
-    else:
-        kin = 0.5 * v_Cz * v_Cz
-    return kin + 0.5 * k1 * (w1 * w1 + w3 * w3) + 0.5 * k2 * w2 * w2 - z_P
-
-
-@numba.njit(cache=True)
+@_jit()
 def _reduced_energy(rough, h, k1, k2, y):
     """E of the reduced state (:func:`_energy_sc`)."""
     ht, s, c, p, y_P, z_P = _geometry(h, y[0])
     return _energy_sc(rough, ht, k1, k2, s, c, y)
 
 
-@numba.njit(cache=True)
+@_jit()
 def _step4(rough, h, y, dt, K, ytmp, y_new):
     """One DOP853 step of the reduced system (4 components), stages in the columns of
     ``K`` (shape (4, 13); column 0 holds f(y) on entry, column 12 f(y_new) on exit).
@@ -137,7 +141,7 @@ def _step4(rough, h, y, dt, K, ytmp, y_new):
     K[3, _NS] = r[3]
 
 
-@numba.njit(cache=True)
+@_jit()
 def _hermite_root(dt, d0, v0, d1, v1):
     """Root in [0, dt] of the cubic Hermite interpolant of d with d(0) = d0 < 0 <= d(dt) = d1
     and slopes v0, v1 (bisection on the bracket then Newton polish)."""
@@ -159,7 +163,7 @@ def _hermite_root(dt, d0, v0, d1, v1):
     return 0.5 * (a + b) * dt
 
 
-@numba.njit(cache=True)
+@_jit()
 def _add_crossing(cr, tc):
     """Add the crossing time ``tc`` to the least-squares sums ``cr = (count, sum k, sum t_k,
     sum k^2, sum k t_k)`` of the crossing times t_k against their index k."""
@@ -171,7 +175,7 @@ def _add_crossing(cr, tc):
     cr[0] = k + 1.0
 
 
-@numba.njit(cache=True)
+@_jit()
 def _summaries(out, status, t, max_d, cr, t_lo, t_hi, e_drift, n_steps):
     """Fill one row of :data:`COLUMNS`; the period is the least-squares slope of the
     crossing times against their index (sums ``cr`` of :func:`_add_crossing`), NaN below
@@ -201,7 +205,7 @@ def _summaries(out, status, t, max_d, cr, t_lo, t_hi, e_drift, n_steps):
 # returned as tuples at every step of every point.  The step itself (_step4), the crossing
 # interpolation (_hermite_root, _add_crossing) and the final record (_summaries) are
 # already separate.
-@numba.njit(cache=True)
+@_jit()
 def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
          max_steps, out):
     n = 4
@@ -293,7 +297,7 @@ def _one(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, ato
     _summaries(out, status, t, max_d, cr, t_lo, t_hi, e_drift, n_steps)
 
 
-@numba.njit(cache=True)
+@_jit()
 def _spread(n):
     """A permutation of 0..n-1 that spreads neighbours apart (the golden-ratio sequence
     ``frac(i phi)``, sorted): the threads of a ``prange`` take contiguous ranges of it, so
@@ -307,7 +311,7 @@ def _spread(n):
     return np.argsort(key, kind="mergesort")
 
 
-@numba.njit(parallel=True, cache=True)
+@_jit(parallel=True)
 def run_batch(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
               max_steps):
     """Integrate every row of ``x0`` (shape (n, 4)) to ``t_end``; summaries (n, NCOL).
@@ -334,144 +338,322 @@ def run_batch(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol
 _SAMPLES = 2
 
 
-# Why one long function (issue 17: compiled kernels are exempt from the ~80-line rule): the
-# Taylor twin of _one, compiled by numba (nopython, inside a prange loop).  The running
-# summaries are taken on each step's polynomial at a few sample points, and with no
-# closures or objects in nopython they stay local scalars of the one frame that owns the
-# jet arrays (J, A) and the step loop; splitting would pass and return them as tuples at
-# every step.  The jet, the step size and the polynomial evaluation are the taylor module's
-# small _tay_* helpers.
-@numba.njit(cache=True)
+# The running record of one trajectory of the Taylor kernels (a float64 array of _NREC): the
+# summaries as they stand and what a step needs from the steps before it.
+_R_T, _R_MAXD, _R_TLO, _R_THI, _R_EDRIFT, _R_STATUS, _R_NSTEPS, _R_E0, _R_NA = range(9)
+_R_CR = 9  # five entries: the least-squares sums of _add_crossing
+_NREC = _R_CR + 5
+
+
+@_jit()
+def _tay_begin(x0, theta_ref, rec, ln):
+    """Record ``ln`` of ``rec`` for a trajectory starting at ``x0``: t = 0, no step, no
+    crossing."""
+    for i in range(_NREC):
+        rec[ln, i] = 0.0
+    rec[ln, _R_MAXD] = abs(x0[0] - theta_ref)
+    rec[ln, _R_TLO] = np.nan
+    rec[ln, _R_THI] = np.nan
+
+
+@_jit()
+def _tay_end(rec, ln, out):
+    """One row of :data:`COLUMNS` from the finished record ``ln`` (:func:`_summaries`)."""
+    r = rec[ln]
+    _summaries(out, r[_R_STATUS], r[_R_T], r[_R_MAXD], r[_R_CR:_R_CR + 5], r[_R_TLO],
+               r[_R_THI], r[_R_EDRIFT], r[_R_NSTEPS])
+
+
+@_jit()
+def _tay_clip(t, dt, t_end):
+    """The step actually taken: ``dt``, or what is left to ``t_end``."""
+    return t_end - t if t + dt >= t_end else dt
+
+
+@_jit()
+def _lane_root(J, ln, P, sg, off, xa, xb, fa, fb):
+    """:func:`rollingdisk.integrate.taylor._tay_poly_root` on theta's polynomial in lane
+    ``ln``.  This and the other ``_lane_*`` helpers take the lane's slices out of line:
+    a slice is a reference-counted view, and one inside the inlined step (even on a branch
+    taken once per trajectory) cost 23 ns per step of every lane."""
+    return _tay_poly_root(J[0, :, ln], P, sg, off, xa, xb, fa, fb)
+
+
+@_jit()
+def _lane_sample(h, J, A, ln, P, x, v):
+    """:func:`rollingdisk.integrate.taylor._tay_sample` in lane ``ln``."""
+    _tay_sample(h, J[:, :, ln], A[:, :, ln], P, x, v)
+
+
+@_jit()
+def _lane_lift_off(h, J, A, ln, P, N, xa, xb, fa, fb):
+    """The root of F_z in lane ``ln`` (:func:`rollingdisk.integrate.taylor._tay_normal`)."""
+    _tay_normal(h, J[:, :, ln], A[:, :, ln], P, N)
+    return _tay_poly_root(N, P - 1, 1.0, 0.0, xa, xb, fa, fb)
+
+
+@_jit()
+def _lane_crossing(rec, ln, tc):
+    """:func:`_add_crossing` to the sums of record ``ln``."""
+    _add_crossing(rec[ln, _R_CR:_R_CR + 5], tc)
+
+
+@_jit()
+def _lane_energy(rough, h, k1, k2, Y, ln):
+    """:func:`_reduced_energy` of lane ``ln``'s state."""
+    return _reduced_energy(rough, h, k1, k2, Y[:, ln].copy())
+
+
+# Why one long function (issue 17: compiled kernels are exempt from the ~80-line rule): one
+# step of one trajectory of the batch Taylor kernels, compiled by numba (nopython, inlined
+# into the step loops of _one_taylor and of the vector lanes).  The summaries are taken on
+# the step polynomial at its sample points, and the guards and crossings found there are
+# located on it; with no closures or objects in nopython, the running summaries are read
+# from the record into local scalars once and written back once.  The arrays are indexed
+# by lane rather than sliced: a slice is a reference-counted view, and taking five of them
+# per lane per step cost more than the step's arithmetic.
+@_jit(inline="always")
+def _tay_advance(rough, h, k1, k2, side, theta_ref, a0, grow_lo, grow_hi, t_end, max_steps,
+                 P, J, A, N, E, dt, V, v, Y, rec, ln):
+    """One step of the trajectory in lane ``ln`` by the Taylor method of
+    :mod:`rollingdisk.integrate.taylor` (order P, step size of Jorba & Zou); the summaries
+    of :func:`_one`, taken on the step polynomials.  Returns the status (0 while running);
+    updates ``Y[:, ln]`` and ``rec[ln]``.
+
+    ``J[:, :, ln]``, ``A[:, :, ln]``: the jet at ``Y[:, ln]``
+    (:func:`rollingdisk.integrate.taylor._tay_jet4_rough` / ``_smooth``); ``E``: the energy
+    there; ``dt``: the step size before clipping to ``t_end``; ``V[m - 1, :, ln]`` =
+    ``(theta, omega1, omega2, omega3, F_z)`` at ``dt' m / _SAMPLES`` (``dt'`` clipped,
+    :func:`_tay_clip`; :func:`rollingdisk.integrate.taylor._tay_sample`): theta (crossings,
+    thresholds, max |theta - theta0|, edge contact, falling flat) and F_z (lift-off) at
+    each sample.  Crossings, threshold times and guard events are located on the
+    polynomial (:func:`rollingdisk.integrate.taylor._tay_poly_root`; for F_z on its series,
+    :func:`rollingdisk.integrate.taylor._tay_normal`), so a guard ends the run where it
+    fires, not at the end of a step.  The energy is taken at every step's start and at the
+    end.
+    """
+    t = rec[ln, _R_T]
+    n_steps = rec[ln, _R_NSTEPS]
+    half_pi = 0.5 * np.pi
+    if n_steps == 0:
+        rec[ln, _R_E0] = E
+        _lane_sample(h, J, A, ln, P, 0.0, v)
+        rec[ln, _R_NA] = v[4]
+        if v[4] <= 0.0:
+            rec[ln, _R_STATUS] = LIFT_OFF
+            return LIFT_OFF
+        if half_pi - abs(Y[0, ln]) <= 0.0:
+            rec[ln, _R_STATUS] = FELL_FLAT
+            return FELL_FLAT
+    E0 = rec[ln, _R_E0]
+    de = abs(E - E0) / max(abs(E0), 1e-300)
+    if de > rec[ln, _R_EDRIFT]:
+        rec[ln, _R_EDRIFT] = de
+    status = 0
+    if t >= t_end:
+        status = COMPLETED
+    elif n_steps >= max_steps:
+        status = FAILED
+    last = t + dt >= t_end
+    dt = _tay_clip(t, dt, t_end)
+    if status == 0 and (not (dt > 1e-15 * max(1.0, t)) or not np.isfinite(dt)):
+        status = FAILED
+    if status != 0:
+        rec[ln, _R_STATUS] = status
+        return status
+    edge = h > 0.0
+    max_d = rec[ln, _R_MAXD]
+    t_lo = rec[ln, _R_TLO]
+    t_hi = rec[ln, _R_THI]
+    n_a = rec[ln, _R_NA]
+    xa = 0.0
+    th_a = Y[0, ln]
+    da = th_a - theta_ref
+    fired = 0
+    mb = 0
+    for m in range(1, _SAMPLES + 1):
+        mb = m
+        xb = dt * m / _SAMPLES if m < _SAMPLES else dt
+        th_b = V[m - 1, 0, ln]
+        n_b = V[m - 1, 4, ln]
+        # guards (an edge contact first, as rollingdisk.integrate.dop853._first_fired)
+        if edge and th_b * side <= 0.0:
+            xb = _lane_root(J, ln, P, side, 0.0, xa, xb, th_a * side, th_b * side)
+            fired = EDGE_CONTACT
+        elif n_b <= 0.0:
+            xb = _lane_lift_off(h, J, A, ln, P, N, xa, xb, n_a, n_b)
+            fired = LIFT_OFF
+        elif half_pi - abs(th_b) <= 0.0:
+            sg = 1.0 if th_b >= 0.0 else -1.0
+            xb = _lane_root(J, ln, P, -sg, -half_pi, xa, xb, half_pi - abs(th_a),
+                            half_pi - abs(th_b))
+            fired = FELL_FLAT
+        if fired != 0:
+            _lane_sample(h, J, A, ln, P, xb, v)
+            th_b = v[0]
+        db = th_b - theta_ref
+        # summaries on (xa, xb]
+        if da < 0.0 <= db:
+            _lane_crossing(rec, ln, t + _lane_root(J, ln, P, 1.0, theta_ref, xa, xb, da, db))
+        ad = abs(db)
+        if ad > max_d:
+            max_d = ad
+        sg = 1.0 if db >= 0.0 else -1.0
+        if np.isnan(t_lo) and ad > grow_lo * a0:
+            lev = grow_lo * a0
+            t_lo = t + _lane_root(J, ln, P, sg, sg * theta_ref + lev, xa, xb, sg * da - lev,
+                                  ad - lev)
+        if np.isnan(t_hi) and ad > grow_hi * a0:
+            lev = grow_hi * a0
+            t_hi = t + _lane_root(J, ln, P, sg, sg * theta_ref + lev, xa, xb, sg * da - lev,
+                                  ad - lev)
+        xa = xb
+        da = db
+        th_a = th_b
+        n_a = n_b
+        if fired != 0:
+            break
+    rec[ln, _R_NSTEPS] = n_steps + 1
+    rec[ln, _R_T] = t_end if (last and fired == 0) else t + xa
+    rec[ln, _R_MAXD] = max_d
+    rec[ln, _R_TLO] = t_lo
+    rec[ln, _R_THI] = t_hi
+    rec[ln, _R_NA] = n_a
+    if fired == 0:
+        for i in range(4):
+            Y[i, ln] = V[mb - 1, i, ln]
+        return 0
+    for i in range(4):
+        Y[i, ln] = v[i]
+    rec[ln, _R_STATUS] = fired
+    E = _lane_energy(rough, h, k1, k2, Y, ln)
+    de = abs(E - E0) / max(abs(E0), 1e-300)
+    if de > rec[ln, _R_EDRIFT]:
+        rec[ln, _R_EDRIFT] = de
+    return fired
+
+
+@_jit()
 def _one_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atolv,
                 max_steps, P, out):
-    """One trajectory by the Taylor method of :mod:`rollingdisk.integrate.taylor` (order P, step
-    size of Jorba & Zou); the summaries of :func:`_one`, taken on the step polynomials.
-
-    Every step is sampled at ``_SAMPLES`` points (:func:`rollingdisk.integrate.taylor._tay_sample`):
-    theta (crossings, thresholds, max |theta - theta0|, edge contact, falling flat) and F_z
-    (lift-off).  Crossings, threshold times and guard events are located on the
-    polynomial (regula falsi; for F_z on its series,
-    :func:`rollingdisk.integrate.taylor._tay_normal`),
-    so a guard ends the run where it fires, not at the end of a step.  The energy is taken
-    at every step's start (sin and cos theta come with the jet) and at the end.
-    """
-    J = np.zeros((4, P + 1))
-    A = np.zeros((14, P + 1))
+    """One trajectory by the Taylor method (:func:`_tay_advance` step by step), the jet,
+    step size and samples computed here one trajectory at a time (one lane): the kernel for
+    orders above :data:`rollingdisk.integrate.lanes.MAX_ORDER`, and the reference the
+    vector lanes are held to."""
+    J2 = np.zeros((4, P + 1))
+    A2 = np.zeros((14, P + 1))
     N = np.zeros(P + 1)
+    V = np.zeros((_SAMPLES, 5, 1))
     y = x0.copy()
+    Y = y.reshape((4, 1))  # the lane views share memory with y, J2, A2
+    J = J2.reshape((4, P + 1, 1))
+    A = A2.reshape((14, P + 1, 1))
     v = np.empty(5)
-    t = 0.0
     side = 1.0 if y[0] >= 0.0 else -1.0
     ht = h * side
-    max_d = abs(y[0] - theta_ref)
-    t_lo = np.nan
-    t_hi = np.nan
-    cr = np.zeros(5)  # least squares of crossing times t_k against k (_add_crossing)
-    e_drift = 0.0
-    status = 0
-    n_steps = 0
-    E0 = 0.0
-    half_pi = 0.5 * np.pi
-    edge = h > 0.0
-    n_a = 0.0
-    while status == 0:
+    rec = np.empty((1, _NREC))
+    _tay_begin(x0, theta_ref, rec, 0)
+    while True:
         if rough:
-            _tay_jet4_rough(h, y, J, A, P)
+            _tay_jet4_rough(h, y, J2, A2, P)
         else:
-            _tay_jet4_smooth(h, y, J, A, P)
-        E = _energy_sc(rough, ht, k1, k2, A[0, 0], A[1, 0], y)
-        if n_steps == 0:
-            E0 = E
-            _tay_sample(h, J, A, P, 0.0, v)
-            n_a = v[4]
-            if n_a <= 0.0:
-                status = LIFT_OFF
-                break
-            if half_pi - abs(y[0]) <= 0.0:
-                status = FELL_FLAT
-                break
-        de = abs(E - E0) / max(abs(E0), 1e-300)
-        if de > e_drift:
-            e_drift = de
-        if t >= t_end:
-            status = COMPLETED
-            break
-        if n_steps >= max_steps:
-            status = FAILED
-            break
-        dt = _tay_step_size(J, P, atolv, rtol)
-        last = False
-        if t + dt >= t_end:
-            dt = t_end - t
-            last = True
-        if not (dt > 1e-15 * max(1.0, t)) or not np.isfinite(dt):
-            status = FAILED
-            break
-        xa = 0.0
-        th_a = y[0]
-        da = th_a - theta_ref
+            _tay_jet4_smooth(h, y, J2, A2, P)
+        E = _energy_sc(rough, ht, k1, k2, A2[0, 0], A2[1, 0], y)
+        dt = _tay_step_size(J2, P, atolv, rtol)
+        dtc = _tay_clip(rec[0, _R_T], dt, t_end)
         for m in range(1, _SAMPLES + 1):
-            xb = dt * m / _SAMPLES if m < _SAMPLES else dt
-            _tay_sample(h, J, A, P, xb, v)
-            th_b = v[0]
-            n_b = v[4]
-            # guards (an edge contact first, as rollingdisk.integrate.dop853._first_fired)
-            fired = 0
-            if edge and th_b * side <= 0.0:
-                xb = _tay_poly_root(J[0], P, side, 0.0, xa, xb, th_a * side, th_b * side)
-                fired = EDGE_CONTACT
-            elif n_b <= 0.0:
-                _tay_normal(h, J, A, P, N)
-                xb = _tay_poly_root(N, P - 1, 1.0, 0.0, xa, xb, n_a, n_b)
-                fired = LIFT_OFF
-            elif half_pi - abs(th_b) <= 0.0:
-                sg = 1.0 if th_b >= 0.0 else -1.0
-                xb = _tay_poly_root(J[0], P, -sg, -half_pi, xa, xb, half_pi - abs(th_a),
-                                    half_pi - abs(th_b))
-                fired = FELL_FLAT
-            if fired != 0:
-                _tay_sample(h, J, A, P, xb, v)
-                th_b = v[0]
-            db = th_b - theta_ref
-            # summaries on (xa, xb]
-            if da < 0.0 <= db:
-                _add_crossing(cr, t + _tay_poly_root(J[0], P, 1.0, theta_ref, xa, xb, da, db))
-            ad = abs(db)
-            if ad > max_d:
-                max_d = ad
-            sg = 1.0 if db >= 0.0 else -1.0
-            if np.isnan(t_lo) and ad > grow_lo * a0:
-                lev = grow_lo * a0
-                t_lo = t + _tay_poly_root(J[0], P, sg, sg * theta_ref + lev, xa, xb,
-                                          sg * da - lev, ad - lev)
-            if np.isnan(t_hi) and ad > grow_hi * a0:
-                lev = grow_hi * a0
-                t_hi = t + _tay_poly_root(J[0], P, sg, sg * theta_ref + lev, xa, xb,
-                                          sg * da - lev, ad - lev)
-            xa = xb
-            da = db
-            th_a = th_b
-            n_a = n_b
-            if fired != 0:
-                status = fired
-                break
-        n_steps += 1
-        t = t_end if (last and status == 0) else t + xa
-        for i in range(4):
-            y[i] = v[i]
-        if status != 0:
-            E = _reduced_energy(rough, h, k1, k2, y)
-            de = abs(E - E0) / max(abs(E0), 1e-300)
-            if de > e_drift:
-                e_drift = de
-    _summaries(out, status, t, max_d, cr, t_lo, t_hi, e_drift, n_steps)
+            _tay_sample(h, J2, A2, P, dtc * m / _SAMPLES if m < _SAMPLES else dtc, v)
+            for i in range(5):
+                V[m - 1, i, 0] = v[i]
+        if _tay_advance(rough, h, k1, k2, side, theta_ref, a0, grow_lo, grow_hi, t_end,
+                        max_steps, P, J, A, N, E, dt, V, v, Y, rec, 0) != 0:
+            break
+    _tay_end(rec, 0, out)
 
 
-@numba.njit(parallel=True, cache=True)
+# Why one long function (issue 17: compiled kernels are exempt from the ~80-line rule): the
+# step loop of LANES trajectories at once, compiled by numba (nopython, one call per
+# block of a prange).  The lanes' arrays (jets, samples, records) are allocated once in
+# this frame; each step is one traced vector call for the jets, energies and step sizes,
+# one for the samples, then the scalar bookkeeping of each lane (_tay_advance), and a lane
+# whose trajectory ended takes the next one of the block.
+@_jit()
+def _lanes(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
+           max_steps, P, order, lo, hi, out):
+    """The trajectories ``order[lo:hi]`` through :data:`rollingdisk.integrate.lanes.LANES`
+    vector lanes (:mod:`rollingdisk.integrate.lanes`; ``P`` a compile-time literal); rows
+    of ``out`` as :func:`_one_taylor` fills them, bit for bit."""
+    W = LANES
+    Y = np.zeros((4, W))
+    Y[0, :] = 0.3  # an idle lane's state: any value that keeps its arithmetic finite
+    Y[3, :] = 1.0
+    hv = np.zeros(W)
+    k1v = np.full(W, 0.25)
+    k2v = np.full(W, 0.5)
+    J = np.zeros((4, P + 1, W))
+    A = np.zeros((14, P + 1, W))
+    EO = np.zeros((2, W))
+    dtc = np.zeros(W)
+    V = np.zeros((_SAMPLES, 5, W))
+    N = np.zeros(P + 1)
+    v = np.empty(5)
+    side = np.ones(W)
+    c = np.zeros((3, W))  # each lane's h, theta_ref, a0 (near at hand, not scattered)
+    rec = np.zeros((W, _NREC))
+    lane = np.full(W, -1)  # the trajectory in each lane, -1 for none
+    fresh = np.zeros(W, np.bool_)  # a trajectory just put in the lane, not started
+    nxt = lo
+    for ln in range(W):
+        if nxt < hi:
+            lane[ln] = order[nxt]
+            fresh[ln] = True
+            nxt += 1
+    live = W - np.sum(lane < 0)
+    while live > 0:
+        for ln in range(W):
+            if fresh[ln]:
+                i = lane[ln]
+                fresh[ln] = False
+                side[ln] = 1.0 if x0[i, 0] >= 0.0 else -1.0
+                hv[ln] = h[i] * side[ln]
+                k1v[ln] = k1[i]
+                k2v[ln] = k2[i]
+                c[0, ln] = h[i]
+                c[1, ln] = theta_ref[i]
+                c[2, ln] = a0[i]
+                for q in range(4):
+                    Y[q, ln] = x0[i, q]
+                _tay_begin(x0[i], theta_ref[i], rec, ln)
+        if rough:
+            _lane_jet_rough(P, hv, k1v, k2v, atol, rtol, Y, J, A, EO)
+        else:
+            _lane_jet_smooth(P, hv, k1v, k2v, atol, rtol, Y, J, A, EO)
+        for ln in range(W):
+            dtc[ln] = _tay_clip(rec[ln, _R_T], EO[1, ln], t_end)
+        _lane_samples(P, _SAMPLES, hv, J, A, dtc, V)
+        for ln in range(W):
+            i = lane[ln]
+            if i < 0:
+                continue
+            st = _tay_advance(rough, c[0, ln], k1v[ln], k2v[ln], side[ln], c[1, ln], c[2, ln],
+                              grow_lo, grow_hi, t_end, max_steps, P, J, A, N, EO[0, ln],
+                              EO[1, ln], V, v, Y, rec, ln)
+            if st != 0:
+                _tay_end(rec, ln, out[i])
+                if nxt < hi:
+                    lane[ln] = order[nxt]
+                    fresh[ln] = True
+                    nxt += 1
+                else:
+                    lane[ln] = -1
+                    live -= 1
+
+
+@_jit(parallel=True)
 def run_batch_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
                      max_steps, P):
-    """:func:`run_batch` by the Taylor method of order P (:func:`_one_taylor`); guards are
-    located inside the step where they fire."""
+    """:func:`run_batch` by the Taylor method of order P (:func:`_one_taylor`, one trajectory
+    at a time); guards are located inside the step where they fire."""
     n = x0.shape[0]
     out = np.empty((n, NCOL))
     atolv = np.full(4, atol)
@@ -481,3 +663,34 @@ def run_batch_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_en
         _one_taylor(rough, h[i], k1[i], k2[i], x0[i], theta_ref[i], a0[i], grow_lo, grow_hi,
                     t_end, rtol, atolv, max_steps, P, out[i])
     return out
+
+
+@_jit(parallel=True)
+def _run_lanes(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
+               max_steps, P, nb):
+    n = x0.shape[0]
+    out = np.empty((n, NCOL))
+    order = _spread(n)
+    for b in numba.prange(nb):
+        _lanes(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
+               max_steps, numba.literally(P), order, b * n // nb, (b + 1) * n // nb, out)
+    return out
+
+
+def run_batch_lanes(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
+                    max_steps, P):
+    """:func:`run_batch_taylor` in vector lanes (:func:`_lanes`),
+    :data:`rollingdisk.integrate.lanes.LANES` trajectories per instruction; the same
+    verdicts, summaries within round-off (the lanes' sin, cos, log and exp are fdlibm's
+    polynomials, not libm's calls).  The order ``P`` (at most
+    :data:`rollingdisk.integrate.lanes.MAX_ORDER`) is compiled in: each order compiles
+    once.  Blocks of the spread order (:func:`_spread`) are shared among the threads,
+    four per thread (one on one thread: the lanes are refilled from it until it runs
+    dry)."""
+    if not 4 <= P <= MAX_ORDER:
+        raise ValueError(f"P = {P}: the lanes are compiled for orders 4..{MAX_ORDER}")
+    n = x0.shape[0]
+    nt = numba.get_num_threads()
+    nb = 1 if nt == 1 else max(1, min(4 * nt, n // (16 * LANES)))
+    return _run_lanes(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol,
+                      atol, max_steps, int(P), nb)

@@ -36,9 +36,11 @@ NO_STEADY_MOTION = outcome("no-steady-motion").code
 def _kernel(method, rough, h, x0, theta_ref, a0, t_end, rtol, atol, max_steps):
     """Summaries (n, NCOL) of the trajectories from the rows of ``x0`` by ``method``: the
     batch Taylor kernel (order from min(rtol, atol),
-    :func:`rollingdisk.integrate.taylor.taylor_order`) or the batch DOP853 kernel of
-    :mod:`rollingdisk.integrate.batch`."""
+    :func:`rollingdisk.integrate.taylor.taylor_order`; in vector lanes up to
+    :data:`rollingdisk.integrate.lanes.MAX_ORDER`, tolerance 1e-17) or the batch DOP853
+    kernel of :mod:`rollingdisk.integrate.batch`."""
     from rollingdisk.integrate import batch as core
+    from rollingdisk.integrate.lanes import MAX_ORDER
     from rollingdisk.integrate.taylor import taylor_order
 
     k1 = _inertia(h)[0]  # eq. (10)
@@ -46,7 +48,10 @@ def _kernel(method, rough, h, x0, theta_ref, a0, t_end, rtol, atol, max_steps):
     args = (rough, h, k1, k2, np.ascontiguousarray(x0), theta_ref, a0, GROW_LO, GROW_HI,
             t_end, rtol, atol, max_steps)
     if method == "taylor":
-        return core.run_batch_taylor(*args, taylor_order(min(rtol, atol)))
+        P = taylor_order(min(rtol, atol))
+        if P <= MAX_ORDER:
+            return core.run_batch_lanes(*args, P)
+        return core.run_batch_taylor(*args, P)
     return core.run_batch(*args)
 
 
