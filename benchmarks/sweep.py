@@ -3,12 +3,14 @@
 Job: perturbed steady circles on rough ground, h = 0.17, theta0 in [0.3, 1.2], omega30 in
 [2, 6] (stable and unstable), kick 1e-3 in omega1, T = 100, rtol = atol = 1e-9.
 
-Prints: the sweep on one thread (the batch Taylor kernel, the default, and the batch DOP853
-kernel, ``method="dop853"``); a baseline loop over scipy.integrate.solve_ivp (DOP853,
-same tolerances) on the numpy right-hand side rollingdisk.equations_of_motion; the
-multi-core speed-up; Dask (LocalCluster, one single-threaded worker process per core)
-against the plain multi-core run; heyoka's batch (SIMD) mode on the same job where heyoka is
-installed.  Timings on a shared machine are noisy: run it alone for figures to quote.
+Prints: the sweep on one thread (the batch Taylor kernel in vector lanes, the default, and
+the batch DOP853 kernel, ``method="dop853"``); the lanes against the same Taylor kernel one
+trajectory at a time (the kernel before the lanes), on the same inputs; a baseline loop
+over scipy.integrate.solve_ivp (DOP853, same tolerances) on the numpy right-hand side
+rollingdisk.equations_of_motion; the multi-core speed-up; Dask (LocalCluster, one
+single-threaded worker process per core) against the plain multi-core run; heyoka's batch
+(SIMD) mode on the same job where heyoka is installed.  Timings on a shared machine are
+noisy: run it alone for figures to quote.
 
 Run: PYTHONPATH=src python benchmarks/sweep.py [N]   (N = 16384 by default: with few
 trajectories Dask's fixed cost per run dominates)
@@ -104,6 +106,40 @@ def heyoka_batch(g, k):
     return nb * B / dt, f"{nb * B / dt:.0f} traj/s/core (heyoka {hy.__version__}, SIMD width {B})"
 
 
+def lanes_vs_scalar(g, pert):
+    """Trajectories/s of the batch Taylor kernel in lanes and one at a time, on the inputs
+    the sweep hands its kernel (both compiled and warm), and whether their verdicts agree."""
+    from rollingdisk.integrate import batch
+    from rollingdisk.integrate.taylor import taylor_order
+    from rollingdisk.sweep import executors
+
+    got = {}
+    orig = executors._kernel
+
+    def capture(*a):
+        got["a"] = a
+        return orig(*a)
+
+    executors._kernel = capture
+    try:
+        run_sweep(g, T, perturbation=pert, rtol=TOL, atol=TOL, executor="serial", chunk=10**7)
+    finally:
+        executors._kernel = orig
+    _, rough, h, x0, theta_ref, a0, t_end, rtol, atol, max_steps = got["a"]
+    k1 = 0.25 + h * h / 3.0
+    args = (rough, h, k1, np.full(k1.shape, 0.5), np.ascontiguousarray(x0), theta_ref, a0,
+            executors.GROW_LO, executors.GROW_HI, t_end, rtol, atol, max_steps)
+    P = taylor_order(TOL)
+    small = tuple(x[:16] if isinstance(x, np.ndarray) else x for x in args)
+    with batch.threads(1):
+        batch.run_batch_taylor(*small, P)  # load both from the cache first
+        batch.run_batch_lanes(*small, P)
+        a, ta = timed(lambda: batch.run_batch_taylor(*args, P))
+        b, tb = timed(lambda: batch.run_batch_lanes(*args, P))
+    same = np.array_equal(a[:, 0], b[:, 0])
+    return len(x0) / ta, len(x0) / tb, same
+
+
 def _warm_worker():
     """Load the compiled kernels in a Dask worker (from numba's cache)."""
     run_sweep(grid(16), 1.0, perturbation=Perturbation(kick=KICK))
@@ -152,8 +188,15 @@ def main():
               f"{rd_ / rm:.0%} (identical: {same})")
     except ImportError:
         print("dask: not installed")
+    from rollingdisk.integrate.lanes import LANES
+
+    rsc, rln, same = lanes_vs_scalar(g, pert)
+    print(f"kernel alone, 1 thread:   {rln:9.0f} traj/s/core in {LANES} "
+          f"lanes, {rsc:.0f} one at a time ({rln / rsc:.2f}x; same verdicts: {same})")
     r, note = heyoka_batch(g, n)
-    print(f"heyoka batch mode: {note}" + ("" if r is None else f"  (sweep/heyoka {r1 / r:.2f})"))
+    print(f"heyoka batch mode: {note}" + ("" if r is None else
+                                          f"  (sweep/heyoka {r1 / r:.2f}, lanes kernel/heyoka "
+                                          f"{rln / r:.2f})"))
 
 
 if __name__ == "__main__":
