@@ -4,9 +4,13 @@ Integrate many trajectories of the reduced system ``x = (theta, omega1, omega2, 
 (eq. 2 with eq. 38 on rough / eq. 49 on smooth ground) in one call, a ``numba.prange`` loop
 over trajectories, by one of two methods:
 
-* :func:`run_batch_taylor` (the default of the sweeps): the Taylor method of
-  :mod:`rollingdisk.integrate.taylor` on the reduced jets ``_tay_jet4_rough``/``_tay_jet4_smooth``;
-  summaries and guards sampled on the step polynomial and located on it.
+* :func:`run_batch_lanes` (the default of the sweeps, orders up to
+  :data:`rollingdisk.integrate.lanes.MAX_ORDER`) and :func:`run_batch_taylor` (one
+  trajectory at a time, any order): the Taylor method of
+  :mod:`rollingdisk.integrate.taylor` on the reduced jets ``_tay_jet4_rough``/``_smooth``,
+  in vector lanes (:mod:`rollingdisk.integrate.lanes`, eight trajectories per
+  instruction) or scalar; summaries and guards sampled on the step polynomial and located
+  on it, by the same per-step code (:func:`_tay_advance`).
 * :func:`run_batch`: DOP853 with the building blocks of :mod:`rollingdisk.integrate.numba_core`
   (``_error_norm``'s rule, ``initial_step``, ``_guards``; the step-size control of scipy's
   DOP853); guards checked at step ends.
@@ -373,9 +377,8 @@ def _tay_clip(t, dt, t_end):
 @_jit()
 def _lane_root(J, ln, P, sg, off, xa, xb, fa, fb):
     """:func:`rollingdisk.integrate.taylor._tay_poly_root` on theta's polynomial in lane
-    ``ln``.  This and the other ``_lane_*`` helpers take the lane's slices out of line:
-    a slice is a reference-counted view, and one inside the inlined step (even on a branch
-    taken once per trajectory) cost 23 ns per step of every lane."""
+    ``ln``.  This and the other ``_lane_*`` helpers take the lane's slices (views with a
+    reference count) out of line, on the rare branches: the inlined step only indexes."""
     return _tay_poly_root(J[0, :, ln], P, sg, off, xa, xb, fa, fb)
 
 
@@ -410,8 +413,7 @@ def _lane_energy(rough, h, k1, k2, Y, ln):
 # the step polynomial at its sample points, and the guards and crossings found there are
 # located on it; with no closures or objects in nopython, the running summaries are read
 # from the record into local scalars once and written back once.  The arrays are indexed
-# by lane rather than sliced: a slice is a reference-counted view, and taking five of them
-# per lane per step cost more than the step's arithmetic.
+# by lane rather than sliced (a slice is a view with a reference count).
 @_jit(inline="always")
 def _tay_advance(rough, h, k1, k2, side, theta_ref, a0, grow_lo, grow_hi, t_end, max_steps,
                  P, J, A, N, E, dt, V, v, Y, rec, ln):
