@@ -112,23 +112,11 @@ def lanes_vs_scalar(g, pert):
     from rollingdisk.integrate import batch
     from rollingdisk.integrate.taylor import taylor_order
     from rollingdisk.sweep import executors
+    from rollingdisk.sweep.grid import _Spec
 
-    got = {}
-    orig = executors._kernel
-
-    def capture(*a):
-        got["a"] = a
-        return orig(*a)
-
-    executors._kernel = capture
-    try:
-        run_sweep(g, T, perturbation=pert, rtol=TOL, atol=TOL, executor="serial", chunk=10**7)
-    finally:
-        executors._kernel = orig
-    _, rough, h, x0, theta_ref, a0, t_end, rtol, atol, max_steps = got["a"]
-    k1 = 0.25 + h * h / 3.0
-    args = (rough, h, k1, np.full(k1.shape, 0.5), np.ascontiguousarray(x0), theta_ref, a0,
-            executors.GROW_LO, executors.GROW_HI, t_end, rtol, atol, max_steps)
+    n = int(np.prod(g.shape))
+    spec = _Spec(g, pert, T, TOL, TOL, 1_000_000, n, n)
+    args = executors.kernel_args(spec)[1]
     P = taylor_order(TOL)
     small = tuple(x[:16] if isinstance(x, np.ndarray) else x for x in args)
     with batch.threads(1):
@@ -137,7 +125,8 @@ def lanes_vs_scalar(g, pert):
         a, ta = timed(lambda: batch.run_batch_taylor(*args, P))
         b, tb = timed(lambda: batch.run_batch_lanes(*args, P))
     same = np.array_equal(a[:, 0], b[:, 0])
-    return len(x0) / ta, len(x0) / tb, same
+    m = len(args[4])
+    return m / ta, m / tb, same
 
 
 def _warm_worker():

@@ -1,11 +1,15 @@
 """The one root finder of the integrators: the Illinois variant of regula falsi.
 
-Every guard and event is located by it: on the DOP853 dense output
+Every guard and event of a simulation is located by it: on the DOP853 dense output
 (:func:`rollingdisk.integrate.dop853._guard_root`), on the Taylor step polynomial
-(:mod:`rollingdisk.integrate.taylor`) and on scipy's dense output
-(:mod:`rollingdisk.integrate.drivers`).  The callers differ only in the function they
-evaluate, so the rule is split into three numba-compilable pieces that each caller's loop
-calls (passing the function in would keep the uncompiled path from re-binding it):
+(:func:`rollingdisk.integrate.taylor._tay_locate`) and on scipy's dense output
+(:mod:`rollingdisk.integrate.drivers`).  The sweeps' batch kernels, which find a theta
+crossing every few steps on one polynomial whose derivative is free, use Newton kept in
+the bracket instead (:func:`rollingdisk.integrate.taylor._tay_poly_root`; it starts from
+:func:`_illinois_trial` and stops by :func:`_illinois_converged`).  The callers differ
+only in the function they evaluate, so the rule is split into three numba-compilable
+pieces that each caller's loop calls (passing the function in would keep the uncompiled
+path from re-binding it):
 
     while not _illinois_converged(xa, xb):
         xc = _illinois_trial(xa, xb, fa, fb)

@@ -9,7 +9,7 @@ from dataclasses import asdict
 
 import numpy as np
 
-from rollingdisk.sweep.executors import _kernel
+from rollingdisk.sweep.executors import _kernel, _kernel_args
 from rollingdisk.sweep.grid import BOUND_FACTOR, Perturbation, SweepGrid, _setup, _Spec
 from rollingdisk.sweep.options import check_run_options
 from rollingdisk.sweep.store import describe, partial_store, save
@@ -150,15 +150,14 @@ def _basin_round(grid, kicks, opts):
 
     spec = _Spec(grid, Perturbation(kick=1.0), opts.t_end, opts.rtol, opts.atol,
                  opts.max_steps, opts.chunk, int(np.prod(grid.shape)), opts.method)
-    x0, h, theta_ref, varpi2, stable, _ = _setup(spec, 0, spec.n)
+    setup = _setup(spec, 0, spec.n)
+    x0, h, theta_ref, varpi2, stable, _ = setup
     k = np.ravel(kicks)
     x0[:, 1] = k
-    ok = np.all(np.isfinite(x0), axis=1)
+    ok, args = _kernel_args(spec, setup, a0=k)
     with core.threads(1 if opts.executor == "serial" else opts.workers):
         out = np.full((spec.n, core.NCOL), np.nan)
         if ok.any():
-            out[ok] = _kernel(opts.method, grid.ground == "rough", h[ok], x0[ok],
-                              theta_ref[ok], k[ok], opts.t_end, opts.rtol, opts.atol,
-                              opts.max_steps)
+            out[ok] = _kernel(opts.method, args)
     bounded = (out[:, 0] == core.COMPLETED) & (out[:, 2] <= BOUND_FACTOR * k)
     return np.where(ok, bounded, False), stable, varpi2, int(ok.sum())

@@ -33,8 +33,32 @@ CONNECT_TIMEOUT = 5.0
 NO_STEADY_MOTION = outcome("no-steady-motion").code
 
 
-def _kernel(method, rough, h, x0, theta_ref, a0, t_end, rtol, atol, max_steps):
-    """Summaries (n, NCOL) of the trajectories from the rows of ``x0`` by ``method``: the
+def _kernel_args(spec: _Spec, setup, a0=None):
+    """``(ok, args)`` from ``setup = _setup(spec, i0, i1)``: which points have a steady
+    motion, and for those the arguments of the batch kernels
+    (:mod:`rollingdisk.integrate.batch`, before the order): ``(rough, h, k1, k2, x0,
+    theta_ref, a0, GROW_LO, GROW_HI, t_end, rtol, atol, max_steps)``, k1 and k2 by eq. (10),
+    a0 (``setup``'s unless given) = 1 where it is not finite."""
+    x0, h, theta_ref, _, _, a0_ = setup
+    a0 = a0_ if a0 is None else a0
+    ok = np.all(np.isfinite(x0), axis=1)
+    h = h[ok]
+    k1 = _inertia(h)[0]  # eq. (10)
+    a0o = np.where(np.isfinite(a0[ok]), a0[ok], 1.0)
+    return ok, (spec.grid.ground == "rough", h, k1, np.full(k1.shape, 0.5),
+                np.ascontiguousarray(x0[ok]), theta_ref[ok], a0o, GROW_LO, GROW_HI,
+                spec.t_end, spec.rtol, spec.atol, spec.max_steps)
+
+
+def kernel_args(spec: _Spec, i0: int = 0, i1: int | None = None):
+    """``(ok, args)`` of :func:`_kernel_args` for the points i0 ... i1 - 1 of ``spec`` (all
+    by default): benchmarks and tests call the batch kernels with exactly what a sweep
+    passes them."""
+    return _kernel_args(spec, _setup(spec, i0, spec.n if i1 is None else i1))
+
+
+def _kernel(method, args):
+    """Summaries (n, NCOL) of the trajectories of :func:`_kernel_args` by ``method``: the
     batch Taylor kernel (order from min(rtol, atol),
     :func:`rollingdisk.integrate.taylor.taylor_order`; in vector lanes up to
     :data:`rollingdisk.integrate.lanes.MAX_ORDER`, tolerance 1e-17) or the batch DOP853
@@ -43,11 +67,8 @@ def _kernel(method, rough, h, x0, theta_ref, a0, t_end, rtol, atol, max_steps):
     from rollingdisk.integrate.lanes import MAX_ORDER
     from rollingdisk.integrate.taylor import taylor_order
 
-    k1 = _inertia(h)[0]  # eq. (10)
-    k2 = np.full(k1.shape, 0.5)
-    args = (rough, h, k1, k2, np.ascontiguousarray(x0), theta_ref, a0, GROW_LO, GROW_HI,
-            t_end, rtol, atol, max_steps)
     if method == "taylor":
+        rtol, atol = args[10], args[11]
         P = taylor_order(min(rtol, atol))
         if P <= MAX_ORDER:
             return core.run_batch_lanes(*args, P)
@@ -63,13 +84,12 @@ def _compute_chunk(spec: _Spec, k: int, n_threads: int | None = None) -> dict:
         core.set_threads(n_threads)
     i0 = k * spec.chunk
     i1 = min(spec.n, i0 + spec.chunk)
-    x0, h, theta_ref, varpi2, stable, a0 = _setup(spec, i0, i1)
-    ok = np.all(np.isfinite(x0), axis=1)
+    setup = _setup(spec, i0, i1)
+    x0, h, theta_ref, varpi2, stable, a0 = setup
+    ok, args = _kernel_args(spec, setup)
     out = np.full((i1 - i0, core.NCOL), np.nan)
     if ok.any():
-        a0o = np.where(np.isfinite(a0[ok]), a0[ok], 1.0)
-        out[ok] = _kernel(spec.method, spec.grid.ground == "rough", h[ok], x0[ok],
-                          theta_ref[ok], a0o, spec.t_end, spec.rtol, spec.atol, spec.max_steps)
+        out[ok] = _kernel(spec.method, args)
     cols = dict(zip(core.COLUMNS, out.T))
     status = np.where(ok, cols["status"], NO_STEADY_MOTION).astype(np.int8)
     period = cols["period"]
