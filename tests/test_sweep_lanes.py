@@ -22,6 +22,7 @@ from rollingdisk.integrate.lanes import (  # noqa: E402
     _lane_jet_rough,
     _lane_jet_smooth,
     _lane_math,
+    _lane_plain,
     _lane_samples,
 )
 from rollingdisk.sweep import executors  # noqa: E402
@@ -147,6 +148,109 @@ def test_traced_jet_step_size_energy_and_samples_are_the_scalar_kernels(rough, P
         for m, x in ((0, 0.5 * EO[1, ln]), (1, EO[1, ln])):
             nc._tay_sample(h[ln], Js, As, P, x, v)
             np.testing.assert_allclose(V[m, :, ln], v, rtol=1e-12, atol=1e-13)
+
+
+# ------------------------------------------------------------------ the common step
+@numba.njit
+def _steps(rough, h, k1, k2, side, c, E, dt, V, Y, rec, Yb, recb, P, J, A, t_end, max_steps,
+           grow_lo, grow_hi, okv, stv):
+    """Lane by lane: the common step (batch._tay_plain) on (Y, rec) and the general one
+    (batch._tay_advance) on copies (Yb, recb), from the same jets."""
+    N = np.zeros(P + 1)
+    v = np.empty(5)
+    for ln in range(Y.shape[1]):
+        okv[ln] = batch._tay_plain(t_end, max_steps, grow_lo, grow_hi, side[ln], c[:, ln],
+                                   E[ln], dt[ln], V[:, :, ln], Y[:, ln], rec[:, ln])
+        stv[ln] = batch._tay_advance(rough, h[ln], k1[ln], k2[ln], side[ln], c[1, ln],
+                                     c[2, ln], grow_lo, grow_hi, t_end, max_steps, P, J, A,
+                                     N, E[ln], dt[ln], V, v, Yb, recb, ln)
+
+
+@numba.njit
+def _plain_lanes(t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec, ok):
+    _lane_plain(t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec, ok)
+
+
+def _step_cases(seed, P=12):
+    """LANES steps from real jets (rough ground), each record set up so that some steps are
+    common and others are not: first steps, last steps, the step budget spent, crossings of
+    theta_ref, growth thresholds passed or already timed.  (The guards are left to the
+    whole-kernel tests.)"""
+    rng = np.random.default_rng(seed)
+    Y = np.empty((4, W))
+    Y[0] = rng.uniform(0.05, 1.4, W) * rng.choice([-1.0, 1.0], W)
+    Y[1] = rng.uniform(-0.5, 0.5, W)
+    Y[2] = rng.uniform(-2.0, 2.0, W)
+    Y[3] = rng.uniform(-5.0, 5.0, W)
+    h = rng.uniform(0.0, 0.5, W)
+    side = np.where(Y[0] >= 0.0, 1.0, -1.0)
+    k1 = 0.25 + h * h / 3.0
+    k2 = np.full(W, 0.5)
+    J = np.zeros((4, P + 1, W))
+    A = np.zeros((14, P + 1, W))
+    EO = np.zeros((2, W))
+    V = np.zeros((2, 5, W))
+    _jet_p(True, h * side, k1, k2, Y, J, A, EO, EO[1].copy(), V, P)
+    t_end = 10.0
+    rec = np.zeros((batch._NREC, W))
+    # theta_ref: the sampled theta's neighbourhood (crossings both ways) or far away
+    thr = Y[0] + rng.choice([0.0, 0.0, 1.0], W) * rng.uniform(-1.5, 1.5, W) * np.abs(
+        V[1, 0] - Y[0])
+    a0 = 10.0 ** rng.uniform(-5.0, -1.0, W)  # the levels 10 a0, 100 a0 passed or not
+    c = np.array([h, thr, a0])
+    rec[batch._R_T] = np.choose(rng.integers(0, 4, W), [0.0, 3.0, 3.0, t_end - 0.5 * EO[1]])
+    rec[batch._R_NSTEPS] = rng.choice([0.0, 4.0, 4.0, 4.0, 4.0, 99.0], W)
+    rec[batch._R_MAXD] = rng.uniform(0.0, 0.1, W)
+    rec[batch._R_TLO] = rng.choice([np.nan, 1.0, 1.0], W)
+    rec[batch._R_THI] = rng.choice([np.nan, 2.0, 2.0], W)
+    rec[batch._R_EDRIFT] = rng.choice([0.0, 1e-9], W)
+    rec[batch._R_E0] = EO[0] * (1.0 + rng.uniform(-1e-8, 1e-8, W))
+    rec[batch._R_NA] = 1.0
+    return h, k1, k2, side, c, EO, V, Y, rec, J, A, t_end
+
+
+@pytest.mark.parametrize("seed", range(24))
+def test_the_common_step_is_the_general_steps_result(seed):
+    """Where _tay_plain takes the step, _tay_advance takes the same one, bit for bit (the
+    general step is the reference); where it declines, it changed nothing, and the general
+    step either ended the run, found a root (a crossing, a threshold), or took the first or
+    the last step.  The traced lanes give the scalar source's result bit for bit."""
+    h, k1, k2, side, c, EO, V, Y, rec, J, A, t_end = _step_cases(seed)
+    max_steps, grow_lo, grow_hi = 99.0, 10.0, 100.0
+    Ya, reca, Yb, recb = Y.copy(), rec.copy(), Y.copy(), rec.copy()
+    ok, st = np.zeros(W), np.zeros(W)
+    _steps(True, h, k1, k2, side, c, EO[0].copy(), EO[1].copy(), V, Ya, reca, Yb, recb, 12,
+           J, A, t_end, max_steps, grow_lo, grow_hi, ok, st)
+    for ln in range(W):
+        if ok[ln]:
+            assert st[ln] == 0
+            np.testing.assert_array_equal(reca[:, ln], recb[:, ln])
+            np.testing.assert_array_equal(Ya[:, ln], Yb[:, ln])
+        else:
+            np.testing.assert_array_equal(reca[:, ln], rec[:, ln])
+            np.testing.assert_array_equal(Ya[:, ln], Y[:, ln])
+            changed = not np.array_equal(recb[batch._R_CR:, ln], rec[batch._R_CR:, ln])
+            timed = (np.isnan(rec[[batch._R_TLO, batch._R_THI], ln])
+                     != np.isnan(recb[[batch._R_TLO, batch._R_THI], ln])).any()
+            first = rec[batch._R_NSTEPS, ln] == 0
+            last = rec[batch._R_T, ln] + EO[1, ln] >= t_end
+            assert st[ln] != 0 or changed or timed or first or last
+    Yt, rect, okt = Y.copy(), rec.copy(), np.zeros(W)
+    _plain_lanes(t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Yt, rect, okt)
+    np.testing.assert_array_equal(okt, ok)
+    np.testing.assert_array_equal(rect, reca)
+    np.testing.assert_array_equal(Yt, Ya)
+
+
+def test_the_common_step_cases_cover_both_answers():
+    oks = []
+    for seed in range(24):
+        h, k1, k2, side, c, EO, V, Y, rec, J, A, t_end = _step_cases(seed)
+        ok = np.zeros(W)
+        _plain_lanes(t_end, 99.0, 10.0, 100.0, side, c, EO, V, Y, rec, ok)
+        oks.append(ok)
+    oks = np.concatenate(oks)
+    assert 0.2 < oks.mean() < 0.8
 
 
 # ------------------------------------------------------------------ the root finder

@@ -33,6 +33,7 @@ from rollingdisk.integrate.lanes import (
     MAX_ORDER,
     _lane_jet_rough,
     _lane_jet_smooth,
+    _lane_plain,
     _lane_samples,
 )
 from rollingdisk.integrate.numba_core import (
@@ -53,6 +54,7 @@ from rollingdisk.integrate.numba_core import (
     _tay_poly_root,
     _tay_sample,
     _tay_step_size,
+    _where,
     initial_step,
 )
 from rollingdisk.model.outcomes import (
@@ -342,8 +344,9 @@ def run_batch(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol
 _SAMPLES = 2
 
 
-# The running record of one trajectory of the Taylor kernels (a float64 array of _NREC): the
-# summaries as they stand and what a step needs from the steps before it.
+# The running records of the trajectories of the Taylor kernels (float64, shape (_NREC,
+# lanes): a field's row holds one value per lane, a vector in the lanes): the summaries as
+# they stand and what a step needs from the steps before it.
 _R_T, _R_MAXD, _R_TLO, _R_THI, _R_EDRIFT, _R_STATUS, _R_NSTEPS, _R_E0, _R_NA = range(9)
 _R_CR = 9  # five entries: the least-squares sums of _add_crossing
 _NREC = _R_CR + 5
@@ -354,16 +357,16 @@ def _tay_begin(x0, theta_ref, rec, ln):
     """Record ``ln`` of ``rec`` for a trajectory starting at ``x0``: t = 0, no step, no
     crossing."""
     for i in range(_NREC):
-        rec[ln, i] = 0.0
-    rec[ln, _R_MAXD] = abs(x0[0] - theta_ref)
-    rec[ln, _R_TLO] = np.nan
-    rec[ln, _R_THI] = np.nan
+        rec[i, ln] = 0.0
+    rec[_R_MAXD, ln] = abs(x0[0] - theta_ref)
+    rec[_R_TLO, ln] = np.nan
+    rec[_R_THI, ln] = np.nan
 
 
 @_jit()
 def _tay_end(rec, ln, out):
     """One row of :data:`COLUMNS` from the finished record ``ln`` (:func:`_summaries`)."""
-    r = rec[ln]
+    r = rec[:, ln]
     _summaries(out, r[_R_STATUS], r[_R_T], r[_R_MAXD], r[_R_CR:_R_CR + 5], r[_R_TLO],
                r[_R_THI], r[_R_EDRIFT], r[_R_NSTEPS])
 
@@ -398,13 +401,68 @@ def _lane_lift_off(h, J, A, ln, P, N, xa, xb, fa, fb):
 @_jit()
 def _lane_crossing(rec, ln, tc):
     """:func:`_add_crossing` to the sums of record ``ln``."""
-    _add_crossing(rec[ln, _R_CR:_R_CR + 5], tc)
+    _add_crossing(rec[_R_CR:_R_CR + 5, ln], tc)
 
 
 @_jit()
 def _lane_energy(rough, h, k1, k2, Y, ln):
     """:func:`_reduced_energy` of lane ``ln``'s state."""
     return _reduced_energy(rough, h, k1, k2, Y[:, ln].copy())
+
+
+@_jit(inline="always")
+def _tay_plain(t_end, max_steps, grow_lo, grow_hi, side, c, E, dt, V, Y, rec):
+    """The common step of :func:`_tay_advance`, without a branch: one whose samples show no
+    guard, no crossing and no threshold, which is neither the first nor the last step of
+    its run, nor a failing one.  If the step is such, the record ``rec`` and the state
+    ``Y`` are advanced as :func:`_tay_advance` would (the same operations, in the same
+    order) and 1.0 is returned; otherwise 0.0, and nothing is changed.
+
+    The arguments are one lane's: ``c`` = (h, theta_ref, a0), ``side`` = sgn theta, ``E``
+    and ``dt`` the energy and the unclipped step size, ``V[m - 1, :]`` the samples,
+    ``Y[:]`` the state, ``rec[:]`` the record.  Written with :func:`_where` alone, it is
+    traced into the vector lanes as it stands
+    (:func:`rollingdisk.integrate.lanes._lane_plain`: every lane at once); the lanes
+    whose step is not common go through :func:`_tay_advance`."""
+    t = rec[_R_T]
+    n = rec[_R_NSTEPS]
+    h = c[0]
+    theta_ref = c[1]
+    half_pi = 0.5 * np.pi
+    lev_lo = grow_lo * c[2]
+    lev_hi = grow_hi * c[2]
+    t_lo = rec[_R_TLO]
+    t_hi = rec[_R_THI]
+    ok = _where(n > 0.0, 1.0, 0.0)
+    ok = _where(n < max_steps, ok, 0.0)
+    ok = _where(t + dt < t_end, ok, 0.0)  # not the last step (nor a NaN or infinite one)
+    ok = _where(dt > 1e-15 * max(1.0, t), ok, 0.0)
+    max_d = rec[_R_MAXD]
+    da = Y[0] - theta_ref
+    for m in range(_SAMPLES):
+        th = V[m, 0]
+        ok = _where(th * side <= 0.0, _where(h > 0.0, 0.0, ok), ok)  # edge contact
+        ok = _where(V[m, 4] <= 0.0, 0.0, ok)  # lift-off
+        ok = _where(half_pi - abs(th) <= 0.0, 0.0, ok)  # fell flat
+        db = th - theta_ref
+        ok = _where(da < 0.0, _where(db >= 0.0, 0.0, ok), ok)  # a crossing
+        ad = abs(db)
+        max_d = max(max_d, ad)
+        # a threshold not yet passed (its time NaN, not equal to itself) is passed now
+        ok = _where(ad > lev_lo, _where(t_lo == t_lo, ok, 0.0), ok)
+        ok = _where(ad > lev_hi, _where(t_hi == t_hi, ok, 0.0), ok)
+        da = db
+    E0 = rec[_R_E0]
+    de = abs(E - E0) / max(abs(E0), 1e-300)
+    go = ok > 0.0
+    rec[_R_EDRIFT] = _where(go, max(rec[_R_EDRIFT], de), rec[_R_EDRIFT])
+    rec[_R_MAXD] = _where(go, max_d, rec[_R_MAXD])
+    rec[_R_NSTEPS] = _where(go, n + 1.0, n)
+    rec[_R_T] = _where(go, t + dt, t)
+    rec[_R_NA] = _where(go, V[_SAMPLES - 1, 4], rec[_R_NA])
+    for i in range(4):
+        Y[i] = _where(go, V[_SAMPLES - 1, i], Y[i])
+    return ok
 
 
 # Why one long function (issue 17: compiled kernels are exempt from the ~80-line rule): one
@@ -420,7 +478,7 @@ def _tay_advance(rough, h, k1, k2, side, theta_ref, a0, grow_lo, grow_hi, t_end,
     """One step of the trajectory in lane ``ln`` by the Taylor method of
     :mod:`rollingdisk.integrate.taylor` (order P, step size of Jorba & Zou); the summaries
     of :func:`_one`, taken on the step polynomials.  Returns the status (0 while running);
-    updates ``Y[:, ln]`` and ``rec[ln]``.
+    updates ``Y[:, ln]`` and ``rec[:, ln]``.
 
     ``J[:, :, ln]``, ``A[:, :, ln]``: the jet at ``Y[:, ln]``
     (:func:`rollingdisk.integrate.taylor._tay_jet4_rough` / ``_smooth``); ``E``: the energy
@@ -434,23 +492,23 @@ def _tay_advance(rough, h, k1, k2, side, theta_ref, a0, grow_lo, grow_hi, t_end,
     fires, not at the end of a step.  The energy is taken at every step's start and at the
     end.
     """
-    t = rec[ln, _R_T]
-    n_steps = rec[ln, _R_NSTEPS]
+    t = rec[_R_T, ln]
+    n_steps = rec[_R_NSTEPS, ln]
     half_pi = 0.5 * np.pi
     if n_steps == 0:
-        rec[ln, _R_E0] = E
+        rec[_R_E0, ln] = E
         _lane_sample(h, J, A, ln, P, 0.0, v)
-        rec[ln, _R_NA] = v[4]
+        rec[_R_NA, ln] = v[4]
         if v[4] <= 0.0:
-            rec[ln, _R_STATUS] = LIFT_OFF
+            rec[_R_STATUS, ln] = LIFT_OFF
             return LIFT_OFF
         if half_pi - abs(Y[0, ln]) <= 0.0:
-            rec[ln, _R_STATUS] = FELL_FLAT
+            rec[_R_STATUS, ln] = FELL_FLAT
             return FELL_FLAT
-    E0 = rec[ln, _R_E0]
+    E0 = rec[_R_E0, ln]
     de = abs(E - E0) / max(abs(E0), 1e-300)
-    if de > rec[ln, _R_EDRIFT]:
-        rec[ln, _R_EDRIFT] = de
+    if de > rec[_R_EDRIFT, ln]:
+        rec[_R_EDRIFT, ln] = de
     status = 0
     if t >= t_end:
         status = COMPLETED
@@ -461,13 +519,13 @@ def _tay_advance(rough, h, k1, k2, side, theta_ref, a0, grow_lo, grow_hi, t_end,
     if status == 0 and (not (dt > 1e-15 * max(1.0, t)) or not np.isfinite(dt)):
         status = FAILED
     if status != 0:
-        rec[ln, _R_STATUS] = status
+        rec[_R_STATUS, ln] = status
         return status
     edge = h > 0.0
-    max_d = rec[ln, _R_MAXD]
-    t_lo = rec[ln, _R_TLO]
-    t_hi = rec[ln, _R_THI]
-    n_a = rec[ln, _R_NA]
+    max_d = rec[_R_MAXD, ln]
+    t_lo = rec[_R_TLO, ln]
+    t_hi = rec[_R_THI, ln]
+    n_a = rec[_R_NA, ln]
     xa = 0.0
     th_a = Y[0, ln]
     da = th_a - theta_ref
@@ -515,23 +573,23 @@ def _tay_advance(rough, h, k1, k2, side, theta_ref, a0, grow_lo, grow_hi, t_end,
         n_a = n_b
         if fired != 0:
             break
-    rec[ln, _R_NSTEPS] = n_steps + 1
-    rec[ln, _R_T] = t_end if (last and fired == 0) else t + xa
-    rec[ln, _R_MAXD] = max_d
-    rec[ln, _R_TLO] = t_lo
-    rec[ln, _R_THI] = t_hi
-    rec[ln, _R_NA] = n_a
+    rec[_R_NSTEPS, ln] = n_steps + 1
+    rec[_R_T, ln] = t_end if (last and fired == 0) else t + xa
+    rec[_R_MAXD, ln] = max_d
+    rec[_R_TLO, ln] = t_lo
+    rec[_R_THI, ln] = t_hi
+    rec[_R_NA, ln] = n_a
     if fired == 0:
         for i in range(4):
             Y[i, ln] = V[mb - 1, i, ln]
         return 0
     for i in range(4):
         Y[i, ln] = v[i]
-    rec[ln, _R_STATUS] = fired
+    rec[_R_STATUS, ln] = fired
     E = _lane_energy(rough, h, k1, k2, Y, ln)
     de = abs(E - E0) / max(abs(E0), 1e-300)
-    if de > rec[ln, _R_EDRIFT]:
-        rec[ln, _R_EDRIFT] = de
+    if de > rec[_R_EDRIFT, ln]:
+        rec[_R_EDRIFT, ln] = de
     return fired
 
 
@@ -553,7 +611,8 @@ def _one_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rt
     v = np.empty(5)
     side = 1.0 if y[0] >= 0.0 else -1.0
     ht = h * side
-    rec = np.empty((1, _NREC))
+    rec = np.empty((_NREC, 1))
+    c = np.array([h, theta_ref, a0])
     _tay_begin(x0, theta_ref, rec, 0)
     while True:
         if rough:
@@ -562,15 +621,27 @@ def _one_taylor(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rt
             _tay_jet4_smooth(h, y, J2, A2, P)
         E = _energy_sc(rough, ht, k1, k2, A2[0, 0], A2[1, 0], y)
         dt = _tay_step_size(J2, P, atolv, rtol)
-        dtc = _tay_clip(rec[0, _R_T], dt, t_end)
+        dtc = _tay_clip(rec[_R_T, 0], dt, t_end)
         for m in range(1, _SAMPLES + 1):
             _tay_sample(h, J2, A2, P, dtc * m / _SAMPLES if m < _SAMPLES else dtc, v)
             for i in range(5):
                 V[m - 1, i, 0] = v[i]
+        if _tay_plain(t_end, max_steps, grow_lo, grow_hi, side, c, E, dt, V[:, :, 0], y,
+                      rec[:, 0]) > 0.0:
+            continue
         if _tay_advance(rough, h, k1, k2, side, theta_ref, a0, grow_lo, grow_hi, t_end,
                         max_steps, P, J, A, N, E, dt, V, v, Y, rec, 0) != 0:
             break
     _tay_end(rec, 0, out)
+
+
+@_jit()
+def _lane_rows(n):
+    """Zeros of shape (n, LANES) whose rows start on a 64-byte boundary: a row is one vector
+    of the lanes, and a vector load that straddles two cache lines costs two."""
+    buf = np.zeros((n + 1) * LANES)
+    k = (-(buf.ctypes.data // 8)) % LANES
+    return buf[k:k + n * LANES].reshape((n, LANES))
 
 
 # Why one long function (issue 17: compiled kernels are exempt from the ~80-line rule): the
@@ -586,22 +657,25 @@ def _lanes(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, a
     vector lanes (:mod:`rollingdisk.integrate.lanes`; ``P`` a compile-time literal); rows
     of ``out`` as :func:`_one_taylor` fills them, bit for bit."""
     W = LANES
-    Y = np.zeros((4, W))
+    # every array of the lanes in one block, each row one vector on a cache line: their
+    # relative places are then fixed, not the allocator's (with separate arrays the kernel's
+    # speed varied from process to process by up to 25 %; in one block, by 11 %)
+    rows = _lane_rows(18 * (P + 1) + 5 * _SAMPLES + _NREC + 15)
+    J, r = rows[:4 * (P + 1)].reshape((4, P + 1, W)), 4 * (P + 1)
+    A, r = rows[r:r + 14 * (P + 1)].reshape((14, P + 1, W)), r + 14 * (P + 1)
+    V, r = rows[r:r + 5 * _SAMPLES].reshape((_SAMPLES, 5, W)), r + 5 * _SAMPLES
+    rec, r = rows[r:r + _NREC], r + _NREC
+    Y, EO, c = rows[r:r + 4], rows[r + 4:r + 6], rows[r + 6:r + 9]
+    hv, k1v, k2v, dtc, side = rows[r + 9], rows[r + 10], rows[r + 11], rows[r + 12], rows[r + 13]
+    plain = rows[r + 14]  # 1.0 where the lane's step was the common one (_tay_plain)
     Y[0, :] = 0.3  # an idle lane's state: any value that keeps its arithmetic finite
     Y[3, :] = 1.0
-    hv = np.zeros(W)
-    k1v = np.full(W, 0.25)
-    k2v = np.full(W, 0.5)
-    J = np.zeros((4, P + 1, W))
-    A = np.zeros((14, P + 1, W))
-    EO = np.zeros((2, W))
-    dtc = np.zeros(W)
-    V = np.zeros((_SAMPLES, 5, W))
+    k1v[:] = 0.25
+    k2v[:] = 0.5
+    side[:] = 1.0
     N = np.zeros(P + 1)
     v = np.empty(5)
-    side = np.ones(W)
-    c = np.zeros((3, W))  # each lane's h, theta_ref, a0 (near at hand, not scattered)
-    rec = np.zeros((W, _NREC))
+    mx = float(max_steps)
     lane = np.full(W, -1)  # the trajectory in each lane, -1 for none
     fresh = np.zeros(W, np.bool_)  # a trajectory just put in the lane, not started
     nxt = lo
@@ -631,11 +705,12 @@ def _lanes(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, a
         else:
             _lane_jet_smooth(P, hv, k1v, k2v, atol, rtol, Y, J, A, EO)
         for ln in range(W):
-            dtc[ln] = _tay_clip(rec[ln, _R_T], EO[1, ln], t_end)
+            dtc[ln] = _tay_clip(rec[_R_T, ln], EO[1, ln], t_end)
         _lane_samples(P, _SAMPLES, hv, J, A, dtc, V)
+        _lane_plain(t_end, mx, grow_lo, grow_hi, side, c, EO, V, Y, rec, plain)
         for ln in range(W):
             i = lane[ln]
-            if i < 0:
+            if i < 0 or plain[ln] > 0.0:
                 continue
             st = _tay_advance(rough, c[0, ln], k1v[ln], k2v[ln], side[ln], c[1, ln], c[2, ln],
                               grow_lo, grow_hi, t_end, max_steps, P, J, A, N, EO[0, ln],

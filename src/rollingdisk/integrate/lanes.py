@@ -403,18 +403,19 @@ class _VecNumpy:
     pi = math.pi
 
 
-def _traced(names: tuple[str, ...]) -> dict:
-    """The scalar sources ``names`` of :mod:`.taylor` re-bound to a namespace in which
-    ``math``, ``np``, ``max``, ``min`` and the helpers ``_where``, ``_signed_h`` are the
-    trace's."""
-    from rollingdisk.integrate import taylor
+def _traced(names: tuple[str, ...], module=None) -> dict:
+    """The scalar sources ``names`` of ``module`` (:mod:`.taylor` by default; a numba
+    function stands for its Python source) re-bound to a namespace in which ``math``,
+    ``np``, ``max``, ``min`` and the helpers ``_where``, ``_signed_h`` are the trace's."""
+    if module is None:
+        from rollingdisk.integrate import taylor as module
 
-    src = dict(taylor.__dict__)
+    src = dict(module.__dict__)
     ns = dict(src)
     ns.update(math=_VecMath, np=_VecNumpy, max=_max, min=_min, _where=_where,
               _signed_h=lambda h, th0: h)
     for name in names:
-        f = src[name]
+        f = getattr(src[name], "py_func", src[name])
         ns[name] = _pytypes.FunctionType(f.__code__, ns, f.__name__, f.__defaults__)
     return ns
 
@@ -508,6 +509,36 @@ def _lane_samples(typingctx, P, S, h, J, A, dt, V):
         finally:
             _Trace.builder = None
             _Trace.flags = ()
+        return context.get_dummy_value()
+
+    return sig, codegen
+
+
+@intrinsic
+def _lane_plain(typingctx, t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec, ok):
+    """The common step in every lane at once: :func:`rollingdisk.integrate.batch._tay_plain`
+    traced, its arguments the lanes' arrays (``side`` (LANES,), ``c`` (3, LANES), ``EO``
+    (2, LANES): the energy and step size of :func:`_lane_jet_rough`, ``V`` (S, 5, LANES),
+    ``Y`` (4, LANES), ``rec`` (NREC, LANES)); ``ok[lane]`` = its result: 1.0 where the lane
+    took the step, 0.0 where the lane is left as it was, for the scalar step."""
+    sig = types.void(t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec, ok)
+
+    def codegen(context, builder, sig, args):
+        from rollingdisk.integrate import batch
+
+        ns = _traced(("_tay_plain",), batch)
+        p = [_data(context, builder, sig.args[i], args[i]) for i in range(4, 11)]
+        _Trace.builder = builder
+        try:
+            sc = [_splat_value(builder, context.cast(builder, args[i], sig.args[i],
+                                                     types.float64)) for i in range(4)]
+            r = ns["_tay_plain"](*sc, _Arr(p[0], (1,))[0], _Arr(p[1], (3,)),
+                                 *(_Arr(p[2], (2,))[k] for k in range(2)),
+                                 _Arr(p[3], (batch._SAMPLES, 5)), _Arr(p[4], (4,)),
+                                 _Arr(p[5], (batch._NREC,)))
+            _Arr(p[6], (1,))[0] = r
+        finally:
+            _Trace.builder = None
         return context.get_dummy_value()
 
     return sig, codegen
