@@ -1,8 +1,10 @@
 """The sweeps' vector lanes (rollingdisk.integrate.lanes, batch.run_batch_lanes) against
 independent truth: numpy's libm for the lanes' sin, cos, log and exp; the scalar Taylor
 kernel (held to the model's kernels by tests/test_simulate_taylor.py) for the traced jets,
-step sizes, energies and samples; closed-form roots for the polynomial root finder; and
-the scalar batch kernel for whole sweeps (equal verdicts, equal frequencies to 1e-12).
+step sizes, energies and samples; the general step (batch._tay_advance) for the common
+step the lanes take without a branch (batch._tay_plain), bit for bit; closed-form roots for
+the polynomial root finder; and the scalar batch kernel for whole sweeps (equal verdicts,
+equal frequencies to 1e-12).
 """
 
 import math

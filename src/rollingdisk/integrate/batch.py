@@ -10,7 +10,8 @@ over trajectories, by one of two methods:
   :mod:`rollingdisk.integrate.taylor` on the reduced jets ``_tay_jet4_rough``/``_smooth``,
   in vector lanes (:mod:`rollingdisk.integrate.lanes`, eight trajectories per
   instruction) or scalar; summaries and guards sampled on the step polynomial and located
-  on it, by the same per-step code (:func:`_tay_advance`).
+  on it, by the same per-step code (:func:`_tay_plain` for the common step, traced into
+  the lanes; :func:`_tay_advance` for the others).
 * :func:`run_batch`: DOP853 with the building blocks of :mod:`rollingdisk.integrate.numba_core`
   (``_error_norm``'s rule, ``initial_step``, ``_guards``; the step-size control of scipy's
   DOP853); guards checked at step ends.
@@ -648,8 +649,9 @@ def _lane_rows(n):
 # step loop of LANES trajectories at once, compiled by numba (nopython, one call per
 # block of a prange).  The lanes' arrays (jets, samples, records) are allocated once in
 # this frame; each step is one traced vector call for the jets, energies and step sizes,
-# one for the samples, then the scalar bookkeeping of each lane (_tay_advance), and a lane
-# whose trajectory ended takes the next one of the block.
+# one for the samples, one for the common step (_tay_plain), then the scalar bookkeeping
+# (_tay_advance) of the lanes whose step was not common, and a lane whose trajectory
+# ended takes the next one of the block.
 @_jit()
 def _lanes(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, atol,
            max_steps, P, order, lo, hi, out):

@@ -1,16 +1,16 @@
 """Vector lanes for the sweeps' batch Taylor kernel: the reduced jets, their step size, their
-sampler and the energy, ``LANES`` trajectories per machine instruction.
+sampler, the energy and the common step, ``LANES`` trajectories per machine instruction.
 
 Nothing here is a second copy of a formula.  The scalar sources of
 :mod:`rollingdisk.integrate.taylor` (``_tay_jet4_rough``, ``_tay_jet4_smooth``,
-``_tay_step_size``, ``_tay_sample``) and ``_energy_sc``
-are *traced*: each is run once, at compile time, on values of :class:`_Vec` instead of
-floats, and every arithmetic operation it performs emits the same operation on an LLVM
-vector ``<LANES x double>`` (one trajectory per lane).  The loops over the orders run in
-Python during the trace, so the code is unrolled for the order P, which is therefore a
-compile-time constant (``numba.literally``); array elements become vector loads and
-stores of the lane layout ``(row, k, lane)``.  The result is a numba intrinsic: it is
-compiled and cached with the numba function that calls it
+``_tay_step_size``, ``_tay_sample``), ``_energy_sc`` and the common step
+:func:`rollingdisk.integrate.batch._tay_plain` are *traced*: each is run once, at compile
+time, on values of :class:`_Vec` instead of floats, and every arithmetic operation it
+performs emits the same operation on an LLVM vector ``<LANES x double>`` (one trajectory per
+lane).  The loops over the orders run in Python during the trace, so the code is unrolled for
+the order P, which is therefore a compile-time constant (``numba.literally``); array
+elements become vector loads and stores of the lane layout ``(row, k, lane)``.  The result is
+a numba intrinsic: it is compiled and cached with the numba function that calls it
 (:func:`rollingdisk.integrate.batch.run_batch_lanes`).
 
 The same operations as the scalar kernel, in the same order, with the same ``contract``
