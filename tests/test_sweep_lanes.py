@@ -170,7 +170,11 @@ def _steps(rough, h, k1, k2, side, c, E, dt, V, Y, rec, Yb, recb, P, J, A, t_end
 
 @numba.njit
 def _plain_lanes(t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec, ok):
-    _lane_plain(t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec, ok)
+    _lane_plain(batch._tay_plain, t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y,
+                rec, ok)
+
+
+_GROW = (10.0, 100.0)  # grow_lo, grow_hi
 
 
 def _step_cases(seed, P=12):
@@ -205,6 +209,10 @@ def _step_cases(seed, P=12):
     rec[batch._R_MAXD] = rng.uniform(0.0, 0.1, W)
     rec[batch._R_TLO] = rng.choice([np.nan, 1.0, 1.0], W)
     rec[batch._R_THI] = rng.choice([np.nan, 2.0, 2.0], W)
+    # as in a run: a level the start of the step is already past was timed before it
+    d0 = np.abs(Y[0] - thr)
+    rec[batch._R_TLO, d0 > _GROW[0] * a0] = 1.0
+    rec[batch._R_THI, d0 > _GROW[1] * a0] = 2.0
     rec[batch._R_EDRIFT] = rng.choice([0.0, 1e-9], W)
     rec[batch._R_E0] = EO[0] * (1.0 + rng.uniform(-1e-8, 1e-8, W))
     rec[batch._R_NA] = 1.0
@@ -218,7 +226,7 @@ def test_the_common_step_is_the_general_steps_result(seed):
     step either ended the run, found a root (a crossing, a threshold), or took the first or
     the last step.  The traced lanes give the scalar source's result bit for bit."""
     h, k1, k2, side, c, EO, V, Y, rec, J, A, t_end = _step_cases(seed)
-    max_steps, grow_lo, grow_hi = 99.0, 10.0, 100.0
+    max_steps, (grow_lo, grow_hi) = 99.0, _GROW
     Ya, reca, Yb, recb = Y.copy(), rec.copy(), Y.copy(), rec.copy()
     ok, st = np.zeros(W), np.zeros(W)
     _steps(True, h, k1, k2, side, c, EO[0].copy(), EO[1].copy(), V, Ya, reca, Yb, recb, 12,
@@ -249,7 +257,7 @@ def test_the_common_step_cases_cover_both_answers():
     for seed in range(24):
         h, k1, k2, side, c, EO, V, Y, rec, J, A, t_end = _step_cases(seed)
         ok = np.zeros(W)
-        _plain_lanes(t_end, 99.0, 10.0, 100.0, side, c, EO, V, Y, rec, ok)
+        _plain_lanes(t_end, 99.0, *_GROW, side, c, EO, V, Y, rec, ok)
         oks.append(ok)
     oks = np.concatenate(oks)
     assert 0.2 < oks.mean() < 0.8

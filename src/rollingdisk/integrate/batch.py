@@ -667,7 +667,7 @@ def _lanes(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, a
     A, r = rows[r:r + 14 * (P + 1)].reshape((14, P + 1, W)), r + 14 * (P + 1)
     V, r = rows[r:r + 5 * _SAMPLES].reshape((_SAMPLES, 5, W)), r + 5 * _SAMPLES
     rec, r = rows[r:r + _NREC], r + _NREC
-    Y, EO, c = rows[r:r + 4], rows[r + 4:r + 6], rows[r + 6:r + 9]
+    Y, EO, c = rows[r:r + 4], rows[r + 4:r + 6], rows[r + 6:r + 9]  # c: h, theta_ref, a0
     hv, k1v, k2v, dtc, side = rows[r + 9], rows[r + 10], rows[r + 11], rows[r + 12], rows[r + 13]
     plain = rows[r + 14]  # 1.0 where the lane's step was the common one (_tay_plain)
     Y[0, :] = 0.3  # an idle lane's state: any value that keeps its arithmetic finite
@@ -709,7 +709,7 @@ def _lanes(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, a
         for ln in range(W):
             dtc[ln] = _tay_clip(rec[_R_T, ln], EO[1, ln], t_end)
         _lane_samples(P, _SAMPLES, hv, J, A, dtc, V)
-        _lane_plain(t_end, mx, grow_lo, grow_hi, side, c, EO, V, Y, rec, plain)
+        _lane_plain(_tay_plain, t_end, mx, grow_lo, grow_hi, side, c, EO, V, Y, rec, plain)
         for ln in range(W):
             i = lane[ln]
             if i < 0 or plain[ln] > 0.0:

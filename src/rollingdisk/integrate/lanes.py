@@ -403,14 +403,16 @@ class _VecNumpy:
     pi = math.pi
 
 
-def _traced(names: tuple[str, ...], module=None) -> dict:
-    """The scalar sources ``names`` of ``module`` (:mod:`.taylor` by default; a numba
-    function stands for its Python source) re-bound to a namespace in which ``math``,
-    ``np``, ``max``, ``min`` and the helpers ``_where``, ``_signed_h`` are the trace's."""
-    if module is None:
-        from rollingdisk.integrate import taylor as module
+def _traced(names: tuple[str, ...], glb: dict | None = None) -> dict:
+    """The scalar sources ``names`` in the module namespace ``glb`` (:mod:`.taylor`'s by
+    default; a numba function stands for its Python source) re-bound to a namespace in
+    which ``math``, ``np``, ``max``, ``min`` and the helpers ``_where``, ``_signed_h`` are
+    the trace's."""
+    if glb is None:
+        from rollingdisk.integrate import taylor
 
-    src = dict(module.__dict__)
+        glb = taylor.__dict__
+    src = dict(glb)
     ns = dict(src)
     ns.update(math=_VecMath, np=_VecNumpy, max=_max, min=_min, _where=_where,
               _signed_h=lambda h, th0: h)
@@ -515,27 +517,33 @@ def _lane_samples(typingctx, P, S, h, J, A, dt, V):
 
 
 @intrinsic
-def _lane_plain(typingctx, t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec, ok):
-    """The common step in every lane at once: :func:`rollingdisk.integrate.batch._tay_plain`
-    traced, its arguments the lanes' arrays (``side`` (LANES,), ``c`` (3, LANES), ``EO``
-    (2, LANES): the energy and step size of :func:`_lane_jet_rough`, ``V`` (S, 5, LANES),
-    ``Y`` (4, LANES), ``rec`` (NREC, LANES)); ``ok[lane]`` = its result: 1.0 where the lane
-    took the step, 0.0 where the lane is left as it was, for the scalar step."""
-    sig = types.void(t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec, ok)
+def _lane_plain(typingctx, step, t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec,
+                ok):
+    """The common step in every lane at once: ``step``
+    (:func:`rollingdisk.integrate.batch._tay_plain`, handed in by its caller so that this
+    module need not import the one that imports it) traced, its arguments the lanes' arrays
+    (``side`` (LANES,), ``c`` (3, LANES), ``EO`` (2, LANES): the energy and step size of
+    :func:`_lane_jet_rough`, ``V`` (S, 5, LANES), ``Y`` (4, LANES), ``rec`` (NREC, LANES),
+    S and NREC the constants ``_SAMPLES`` and ``_NREC`` of ``step``'s module); ``ok[lane]``
+    = its result: 1.0 where the lane took the step, 0.0 where the lane is left as it was,
+    for the scalar step."""
+    if not isinstance(step, types.Dispatcher):
+        return None
+    f = step.dispatcher.py_func
+    sig = types.void(step, t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec, ok)
 
     def codegen(context, builder, sig, args):
-        from rollingdisk.integrate import batch
-
-        ns = _traced(("_tay_plain",), batch)
-        p = [_data(context, builder, sig.args[i], args[i]) for i in range(4, 11)]
+        glb = f.__globals__
+        ns = _traced((f.__name__,), glb)
+        p = [_data(context, builder, sig.args[i], args[i]) for i in range(5, 12)]
         _Trace.builder = builder
         try:
             sc = [_splat_value(builder, context.cast(builder, args[i], sig.args[i],
-                                                     types.float64)) for i in range(4)]
-            r = ns["_tay_plain"](*sc, _Arr(p[0], (1,))[0], _Arr(p[1], (3,)),
-                                 *(_Arr(p[2], (2,))[k] for k in range(2)),
-                                 _Arr(p[3], (batch._SAMPLES, 5)), _Arr(p[4], (4,)),
-                                 _Arr(p[5], (batch._NREC,)))
+                                                     types.float64)) for i in range(1, 5)]
+            r = ns[f.__name__](*sc, _Arr(p[0], (1,))[0], _Arr(p[1], (3,)),
+                               *(_Arr(p[2], (2,))[k] for k in range(2)),
+                               _Arr(p[3], (glb["_SAMPLES"], 5)), _Arr(p[4], (4,)),
+                               _Arr(p[5], (glb["_NREC"],)))
             _Arr(p[6], (1,))[0] = r
         finally:
             _Trace.builder = None
