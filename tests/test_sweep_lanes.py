@@ -112,27 +112,37 @@ def _jet_p(rough, hv, k1v, k2v, Y, J, A, EO, dt, V, P):
     _jet(rough, hv, k1v, k2v, Y, J, A, EO, dt, V, numba.literally(P))
 
 
+def _lane_states(rng, tilt, w1, h_max, thin_first=False):
+    """LANES random reduced states, tilts of |theta| in ``tilt`` of either sign, and their
+    disks (lane 0's of no thickness if ``thin_first``): (Y, h, side, k1, k2), k1 and k2 by
+    eq. (10)."""
+    Y = np.empty((4, W))
+    Y[0] = rng.uniform(*tilt, W) * rng.choice([-1.0, 1.0], W)
+    Y[1] = rng.uniform(-w1, w1, W)
+    Y[2] = rng.uniform(-2.0, 2.0, W)
+    Y[3] = rng.uniform(-5.0, 5.0, W)
+    h = rng.uniform(0.0, h_max, W)
+    if thin_first:
+        h[0] = 0.0
+    side = np.where(Y[0] >= 0.0, 1.0, -1.0)
+    return Y, h, side, 0.25 + h * h / 3.0, np.full(W, 0.5)
+
+
+def _lane_buffers(P):
+    """Zeroed J, A, EO, V of the lanes for order P and two samples."""
+    return (np.zeros((4, P + 1, W)), np.zeros((14, P + 1, W)), np.zeros((2, W)),
+            np.zeros((2, 5, W)))
+
+
 @pytest.mark.parametrize("rough", [True, False])
 @pytest.mark.parametrize("P", [6, 12])
 def test_traced_jet_step_size_energy_and_samples_are_the_scalar_kernels(rough, P):
     """Every lane of the traced code agrees with the scalar Taylor kernel on its own state,
     for tilts of both signs (the signed h~) and thicknesses from 0."""
-    rng = np.random.default_rng(P + rough)
-    Y = np.empty((4, W))
-    Y[0] = rng.uniform(0.2, 1.3, W) * rng.choice([-1.0, 1.0], W)
-    Y[1] = rng.uniform(-0.3, 0.3, W)
-    Y[2] = rng.uniform(-2.0, 2.0, W)
-    Y[3] = rng.uniform(-5.0, 5.0, W)
-    h = rng.uniform(0.0, 1.0, W)
-    h[0] = 0.0
-    side = np.where(Y[0] >= 0.0, 1.0, -1.0)
-    k1 = 0.25 + h * h / 3.0
-    k2 = np.full(W, 0.5)
-    J = np.zeros((4, P + 1, W))
-    A = np.zeros((14, P + 1, W))
-    EO = np.zeros((2, W))
+    Y, h, side, k1, k2 = _lane_states(np.random.default_rng(P + rough), (0.2, 1.3), 0.3, 1.0,
+                                      thin_first=True)
+    J, A, EO, V = _lane_buffers(P)
     dt = np.zeros(W)
-    V = np.zeros((2, 5, W))
     _jet_p(rough, h * side, k1, k2, Y, J, A, EO, dt, V, P)
     jet = nc._tay_jet4_rough if rough else nc._tay_jet4_smooth
     for ln in range(W):
@@ -183,19 +193,8 @@ def _step_cases(seed, P=12):
     theta_ref, growth thresholds passed or already timed.  (The guards are left to the
     whole-kernel tests.)"""
     rng = np.random.default_rng(seed)
-    Y = np.empty((4, W))
-    Y[0] = rng.uniform(0.05, 1.4, W) * rng.choice([-1.0, 1.0], W)
-    Y[1] = rng.uniform(-0.5, 0.5, W)
-    Y[2] = rng.uniform(-2.0, 2.0, W)
-    Y[3] = rng.uniform(-5.0, 5.0, W)
-    h = rng.uniform(0.0, 0.5, W)
-    side = np.where(Y[0] >= 0.0, 1.0, -1.0)
-    k1 = 0.25 + h * h / 3.0
-    k2 = np.full(W, 0.5)
-    J = np.zeros((4, P + 1, W))
-    A = np.zeros((14, P + 1, W))
-    EO = np.zeros((2, W))
-    V = np.zeros((2, 5, W))
+    Y, h, side, k1, k2 = _lane_states(rng, (0.05, 1.4), 0.5, 0.5)
+    J, A, EO, V = _lane_buffers(P)
     _jet_p(True, h * side, k1, k2, Y, J, A, EO, EO[1].copy(), V, P)
     t_end = 10.0
     rec = np.zeros((batch._NREC, W))
