@@ -1,9 +1,9 @@
 """simulate_coulomb: the scipy path against the compiled contact phase
-(rollingdisk.friction.fastsegment), wall seconds, compile excluded (reported apart).
+(rollingdisk.ivp.fastsegment), wall seconds, compile excluded (reported apart).
 
 (a) a long rolling/sliding run: Disk(0.1), Coulomb(0.3, rolling resistance 0.002) from a
     tilted rolling circle, kicked into sliding, to t = T;
-(b) one coin toss (rollingdisk.friction.toss.toss): simulate_to_rest calls simulate_coulomb
+(b) one coin toss (rollingdisk.scenarios.toss.toss): simulate_to_rest calls simulate_coulomb
     for each contact phase with method="auto", which goes compiled once the compiled loop is
     loaded (the scipy run forces the scipy path by an infinite PY_BUDGET).
 
@@ -16,9 +16,9 @@ import sys
 import time
 
 import rollingdisk as rd
-from rollingdisk.friction import fastsegment as fs
-from rollingdisk.friction import hybrid as hy
-from rollingdisk.friction.toss import toss
+from rollingdisk.ivp import fastsegment as fs
+from rollingdisk.ivp import hybrid as hy
+from rollingdisk.scenarios.toss import toss
 
 
 def long_run(method, T):

@@ -44,7 +44,7 @@ import rollingdisk as rd
 T, runs, runs_c = float(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3])
 opts = json.loads(sys.argv[4])
 per_run = sys.argv[5] == "per-run"
-from rollingdisk.integrate import jit
+from rollingdisk.engine import jit
 disk = rd.Disk(h=0.37)
 m = rd.steady_motion(disk, "rough", 0.3, Omega0=3.0)
 y0 = np.array(m.initial_state(0.0, 0.0), dtype=float)

@@ -131,9 +131,9 @@ def main(argv=None) -> int:
 
 
 def uncompiled(disk, y0, T, rtol):
-    """The same integrator run uncompiled (rollingdisk.integrate.pycore), as a short run does."""
-    from rollingdisk.integrate import jit as _jit
-    from rollingdisk.integrate import jit as _simulate
+    """The same integrator run uncompiled (rollingdisk.engine.pycore), as a short run does."""
+    from rollingdisk.engine import jit as _jit
+    from rollingdisk.engine import jit as _simulate
 
     core, budget = _simulate._core, _jit.PY_BUDGET
     _simulate._core, _jit.PY_BUDGET = None, float("inf")

@@ -116,9 +116,8 @@ def lanes_vs_scalar(g, pert, other=None, repeat=3):
     the best rate of ``other()`` (heyoka), the lanes and ``other`` each the best of
     ``repeat`` runs taken in turn (a neighbour's load on a shared machine then weighs on
     both sides of their ratio)."""
-    from rollingdisk.integrate import batch
-    from rollingdisk.integrate.taylor import taylor_order
-    from rollingdisk.sweep import executors
+    from rollingdisk.engine.taylor import taylor_order
+    from rollingdisk.sweep import batch, executors
     from rollingdisk.sweep.grid import _Spec
 
     n = int(np.prod(g.shape))
@@ -190,7 +189,7 @@ def main():
               f"{rd_ / rm:.0%} (identical: {same})")
     except ImportError:
         print("dask: not installed")
-    from rollingdisk.integrate.lanes import LANES
+    from rollingdisk.engine.lanes import LANES
 
     run_heyoka, note = heyoka_batch(g, n)
     rsc, rln, same, rh = lanes_vs_scalar(g, pert, run_heyoka)

@@ -6,7 +6,7 @@ import sys
 import time
 
 import rollingdisk as rd
-from rollingdisk.friction.toss import toss_ensemble
+from rollingdisk.scenarios.toss import toss_ensemble
 
 if __name__ == "__main__":
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 1000

@@ -2,7 +2,7 @@
 
 Every name of ``rollingdisk.__all__`` is listed under its public path (``rollingdisk.Disk``),
 plus the members of the public modules ``rollingdisk.theory.exact``, ``rollingdisk.sweep``,
-``rollingdisk.friction.euler_disk`` and ``rollingdisk.plotting``; autosummary then generates
+``rollingdisk.scenarios.euler_disk`` and ``rollingdisk.plotting``; autosummary then generates
 one page per name under ``docs/api/generated/``.  No private module path is written down: a name's
 topic is read from the module that defines it (its ``__module__``, or for a constant the
 module whose ``__all__`` holds it), so the index follows the package when modules move, and
@@ -32,7 +32,7 @@ TOPICS = (
      "drag; the hybrid simulation and its energy balance."),
     ("exact", "Exact motions", "The integrable disk by quadrature: ``rollingdisk.theory.exact``."),
     ("sweep", "Sweeps", "Many runs as one dataset: ``rollingdisk.sweep``."),
-    ("euler_disk", "Euler's disk", "The toy run to its end: ``rollingdisk.friction.euler_disk``."),
+    ("euler_disk", "Euler's disk", "The toy run to its end: ``rollingdisk.scenarios.euler_disk``."),
     ("plotting", "Plotting", "Maps and trajectory plots (matplotlib): "
                              "``rollingdisk.plotting``."),
     ("other", "Other public names", "Names no topic rule places (yet)."),
@@ -44,8 +44,10 @@ MODULE_TOPICS = {
     "steady": "steady", "regions": "steady",
     "theory": "steady", "oscillations": "steady", "exact": "exact",
     "trajectory": "simulation", "events": "simulation", "simulation": "simulation",
-    "jit": "simulation", "measure": "simulation", "integrate": "simulation",
-    "ground": "friction", "coulomb": "friction", "hybrid": "friction", "friction": "friction",
+    "jit": "simulation", "measure": "simulation", "engine": "simulation",
+    "results": "simulation", "ivp": "simulation",
+    "ground": "friction", "coulomb": "friction", "hybrid": "friction", "motion": "friction",
+    "toss": "friction", "scenarios": "friction", "phases": "friction",
 }
 
 #: Names placed by their meaning rather than by the module that holds them.
@@ -56,7 +58,7 @@ NAME_TOPICS = {
 }
 
 #: Public modules documented member by member, under their own topic (topic -> module).
-MODULES = {"exact": "theory.exact", "sweep": "sweep", "euler_disk": "friction.euler_disk",
+MODULES = {"exact": "theory.exact", "sweep": "sweep", "euler_disk": "scenarios.euler_disk",
            "plotting": "plotting"}
 
 

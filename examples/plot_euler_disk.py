@@ -4,7 +4,7 @@ Euler's disk to its end
 
 The commercial toy (a steel disk 75 mm across and 12.7 mm thick, ``h = 0.169``) is spun up on
 its spin-in-place steady motion at a steep tilt and left to itself on a table
-(:func:`rollingdisk.friction.euler_disk.run_euler_disk`: creep friction, rolling resistance, LSODA
+(:func:`rollingdisk.scenarios.euler_disk.run_euler_disk`: creep friction, rolling resistance, LSODA
 to the end). It loses energy slowly, so it creeps down the family of steady motions: the
 tilt ``alpha = pi/2 - |theta|`` falls, the precession rate ``Omega`` and the speed of the
 contact point grow, and near the end all three follow power laws of ``t0 - t``.
@@ -20,7 +20,7 @@ import numpy as np
 
 import rollingdisk as rd
 from rollingdisk import plotting
-from rollingdisk.friction.euler_disk import run_euler_disk
+from rollingdisk.scenarios.euler_disk import run_euler_disk
 
 result = run_euler_disk()
 disk = result.toy.disk

@@ -20,7 +20,7 @@ from hypothesis import strategies as st
 from scipy import integrate
 
 import rollingdisk as rd
-from rollingdisk.friction import air_models as am
+from rollingdisk.model import air_models as am
 from rollingdisk.symbolic import air_film as af
 
 RNG = np.random.default_rng(22)

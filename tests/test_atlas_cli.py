@@ -17,7 +17,7 @@ matplotlib.use("Agg")
 import pytest  # noqa: E402
 
 from rollingdisk.atlas.build import build_atlas
-from rollingdisk.cli.main import main
+from rollingdisk.cli.app import main
 
 
 def _referenced(index_html: str):

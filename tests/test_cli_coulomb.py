@@ -10,7 +10,7 @@ import json
 import pytest
 
 import rollingdisk as rd
-from rollingdisk.cli.main import main
+from rollingdisk.cli.app import main
 
 
 def run_json(capsys, *argv):

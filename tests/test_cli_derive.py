@@ -4,7 +4,7 @@ import json
 import subprocess
 import sys
 
-from rollingdisk.cli.main import main
+from rollingdisk.cli.app import main
 
 
 def test_derive_json_section_2(capsys):

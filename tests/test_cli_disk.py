@@ -20,7 +20,7 @@ import re
 import numpy as np
 import pytest
 
-from rollingdisk.cli.main import main
+from rollingdisk.cli.app import main
 
 G0 = 9.80665
 #: The 1-euro coin (ECB): 23.25 mm across, 2.33 mm thick, 7.5 g.

@@ -11,7 +11,7 @@ import json
 import numpy as np
 import pytest
 
-from rollingdisk.cli.main import main
+from rollingdisk.cli.app import main
 from rollingdisk.plotting.reports import EULER_DISK_FILES
 
 SHORT = ["--alpha0", "0.05", "--quiet"]

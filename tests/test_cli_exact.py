@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import rollingdisk as rd
-from rollingdisk.cli.main import main
+from rollingdisk.cli.app import main
 
 KEYS = {"status", "theta_min", "theta_max", "period", "delta_psi", "varpi", "t_end",
         "theta_end", "drift", "frequency", "amplitude"}

@@ -1,6 +1,6 @@
 """The command line under random hostile input (a fixed seed, so a failure replays).
 
-Sources of truth: the exit-status contract of ``rollingdisk.cli.main`` (README, "Command
+Sources of truth: the exit-status contract of ``rollingdisk.cli.app`` (README, "Command
 line"): every call ends with 0 or 2, never 1 (a traceback is a bug); exit 2 prints exactly
 one line on stderr; JSON never holds NaN or infinity; no output is left half-written (no
 temporary file of ``rollingdisk.util.files`` survives); and no call hangs (a generous

@@ -154,7 +154,7 @@ def test_an_output_complete_before_the_signal_is_named(tmp_path, monkeypatch, ca
 
 EARLY = """
 import builtins, os, signal, sys
-import rollingdisk_cli
+import rollingdisk.cli.entry as rollingdisk_cli
 real = builtins.__import__
 def hook(name, *args, **kwargs):
     if name == {module!r}:

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from rollingdisk import Disk, energy_drift, simulate
-from rollingdisk.cli.main import main
+from rollingdisk.cli.app import main
 from rollingdisk.util.progress import ProgressBar as _ProgressBar
 
 STATE = "theta=0.3,omega2=2.0,omega3=0.5"

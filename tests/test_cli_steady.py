@@ -8,7 +8,7 @@ import math
 import pytest
 
 from rollingdisk import Disk, stability, thresholds
-from rollingdisk.cli.main import main
+from rollingdisk.cli.app import main
 from rollingdisk.theory.steady import steady_motion, straight_line
 
 KEYS = {"ground", "h", "motion", "theta0", "Omega0", "omega0", "omega20", "omega30", "r_C",

@@ -1,4 +1,4 @@
-"""The compiled contact phase of simulate_coulomb (rollingdisk.friction.fastsegment) against
+"""The compiled contact phase of simulate_coulomb (rollingdisk.ivp.fastsegment) against
 the scipy path and against independent truth (closed form, rough-ground integration,
 energy balance eq. 12)."""
 
@@ -9,8 +9,8 @@ import pytest
 from scipy.optimize import brentq
 
 import rollingdisk as rd
-from rollingdisk.friction import fastsegment as fs
-from rollingdisk.friction import hybrid as hy
+from rollingdisk.ivp import fastsegment as fs
+from rollingdisk.ivp import hybrid as hy
 
 pytestmark = pytest.mark.skipif(not fs.available(), reason="needs numba")
 
@@ -220,7 +220,7 @@ def test_compiled_touchdown_is_where_the_flying_disk_meets_the_plane(ns, monkeyp
     spins): the compiled advancement finds the scipy-path time, and there the lowest point
     of the closed-form free flight (``free_flight``, an independent evaluation) is on the
     plane while it was above it just before."""
-    from rollingdisk.friction import impact as im
+    from rollingdisk.phases import impact as im
 
     rng = np.random.default_rng(3)
     for _ in range(60):

@@ -1,5 +1,5 @@
 """Coulomb ground, equations: kernels against the sympy derivation, limits, energy rate,
-ground values (rollingdisk.friction.ground, rollingdisk.symbolic.coulomb)."""
+ground values (rollingdisk.model.ground, rollingdisk.symbolic.coulomb)."""
 
 import math
 
@@ -8,8 +8,8 @@ import pytest
 
 import rollingdisk as rd
 from conftest import random_states
-from rollingdisk.friction import coulomb as eq
-from rollingdisk.friction.ground import (
+from rollingdisk.model import coulomb as eq
+from rollingdisk.model.ground import (
     AirDrag,
     Coulomb,
     PivotFriction,

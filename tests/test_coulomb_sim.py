@@ -1,4 +1,4 @@
-"""Hybrid rolling/sliding simulation on Coulomb ground (rollingdisk.friction.hybrid)."""
+"""Hybrid rolling/sliding simulation on Coulomb ground (rollingdisk.ivp.hybrid)."""
 
 import math
 
@@ -7,8 +7,8 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import rollingdisk as rd
-from rollingdisk.friction.ground import Coulomb
-from rollingdisk.friction.hybrid import energy_balance, simulate_coulomb, slip_direction
+from rollingdisk.ivp.hybrid import energy_balance, simulate_coulomb, slip_direction
+from rollingdisk.model.ground import Coulomb
 from rollingdisk.util.errors import ParameterError
 
 ROUGH_IN_COULOMB = [0, 1, 4, 5, 6, 7, 8, 9]

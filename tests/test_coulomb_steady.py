@@ -8,7 +8,7 @@ from hypothesis import strategies as st
 
 import rollingdisk as rd
 from conftest import SIGN
-from rollingdisk.friction.ground import Coulomb
+from rollingdisk.model.ground import Coulomb
 from rollingdisk.util.errors import ParameterError
 
 

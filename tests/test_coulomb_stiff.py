@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import rollingdisk as rd
-from rollingdisk.friction.euler_disk import EulerDisk, run_euler_disk
+from rollingdisk.scenarios.euler_disk import EulerDisk, run_euler_disk
 
 
 def test_stiff_sliding_disk_rolls_at_the_closed_form_time():
@@ -69,7 +69,7 @@ def test_stiff_converges_with_its_tolerance_over_a_long_slide():
 def test_friction_direction_turns_continuously_into_the_slip_direction():
     """``e`` is ``ref`` at u = 0 and ``sgn(u . ref) u/|u|`` from |u| = u_eps on, with no
     jump at u_eps (random states of the disk: u from eq. 6)."""
-    from rollingdisk.friction.coulomb import _friction_direction, _slip_velocity
+    from rollingdisk.model.coulomb import _friction_direction, _slip_velocity
 
     rng = np.random.default_rng(7)
     for _ in range(200):
@@ -94,7 +94,7 @@ def test_stiff_runs_the_micro_slip_of_an_euler_disk_to_its_fall():
     """mu = 2, alpha0 = 0.1, c = 5e-3: rolling, then micro-slip (23 transitions) to the
     fall; compiled DOP853 needs 4,964,713 steps (docs/friction.md), LSODA tens of
     thousands, and both end at the same time."""
-    from rollingdisk.friction.euler_disk import _kicked_state
+    from rollingdisk.scenarios.euler_disk import _kicked_state
 
     toy = EulerDisk(alpha0=0.1, mu=2.0, rolling_resistance=5e-3, friction="coulomb")
     x0 = _kicked_state(toy, 0.0)

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import rollingdisk as rd
-from rollingdisk.friction.euler_disk import EulerDisk, run_euler_disk
+from rollingdisk.scenarios.euler_disk import EulerDisk, run_euler_disk
 
 A, M, G = 0.05, 0.4, 9.80665
 SCALED = rd.Disk.from_dimensions(radius=A, thickness=0.017, mass=M)

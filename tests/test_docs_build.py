@@ -59,7 +59,7 @@ def _page(html: Path, name: str) -> Path | None:
 def test_every_public_name_has_a_page(built):
     _, html = built
     names = [f"rollingdisk.{n}" for n in rollingdisk.__all__]
-    for mod in ("theory.exact", "sweep", "friction.euler_disk", "plotting"):
+    for mod in ("theory.exact", "sweep", "scenarios.euler_disk", "plotting"):
         module = importlib.import_module(f"rollingdisk.{mod}")
         names += [f"rollingdisk.{mod}.{n}" for n in module.__all__  # documented once: at
                   if getattr(rollingdisk, n, None) is not getattr(module, n)]  # the top

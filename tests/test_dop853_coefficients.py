@@ -1,4 +1,4 @@
-"""The DOP853 table the library owns (rollingdisk.integrate.dop853_coefficients).
+"""The DOP853 table the library owns (rollingdisk.engine.dop853_coefficients).
 
 Sources of truth: the order conditions a Runge-Kutta method of order 8 must satisfy (the
 quadrature conditions sum b_i c_i^(k-1) = 1/k for k <= 8, row sums of A equal to c, and the
@@ -11,7 +11,7 @@ import importlib
 import numpy as np
 import pytest
 
-from rollingdisk.integrate import dop853_coefficients as d
+from rollingdisk.engine import dop853_coefficients as d
 
 
 def test_row_sums_of_A_are_the_nodes():

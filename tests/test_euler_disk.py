@@ -1,4 +1,4 @@
-"""Euler's disk (rollingdisk.friction.euler_disk), grouped by source of truth:
+"""Euler's disk (rollingdisk.scenarios.euler_disk), grouped by source of truth:
 
 * the sympy derivation (sliding system with a general friction force) vs the creep
   right-hand side at random states; the creep law's shape derived with sympy;
@@ -16,8 +16,9 @@ import numpy as np
 import pytest
 
 import rollingdisk as rd
-from rollingdisk.friction.air_models import BoundaryLayerAirDrag
-from rollingdisk.friction.euler_disk import (
+from rollingdisk.model import geometry as eq
+from rollingdisk.model.air_models import BoundaryLayerAirDrag
+from rollingdisk.scenarios.euler_disk import (
     AIR_VISCOSITY,
     FIT_WINDOW_AIR,
     EulerDisk,
@@ -28,7 +29,6 @@ from rollingdisk.friction.euler_disk import (
     predicted_exponents,
     run_euler_disk,
 )
-from rollingdisk.model import geometry as eq
 from rollingdisk.util.errors import ParameterError
 
 
@@ -294,7 +294,7 @@ def test_bounded_work_statuses():
 def test_collapsing_steps_are_a_status(monkeypatch):
     """A right-hand side no step can resolve (v_Cx pushed back across 0 with +-1e3, a
     chattering switch): the run stops with "step sizes collapsed", it does not hang."""
-    import rollingdisk.friction.euler_disk as ed
+    import rollingdisk.scenarios.euler_disk as ed
 
     rhs = ed._rhs
 

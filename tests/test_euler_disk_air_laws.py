@@ -1,4 +1,4 @@
-"""Euler's disk with Bildsten's boundary-layer air law (rollingdisk.friction.euler_disk,
+"""Euler's disk with Bildsten's boundary-layer air law (rollingdisk.scenarios.euler_disk,
 ``air_law="boundary-layer"``), and the spin-down comparison of the dissipation laws.
 
 Sources of truth: the chain rule on the energy (eq. 13) against the powers; the
@@ -14,8 +14,8 @@ import math
 import numpy as np
 import pytest
 
-from rollingdisk.friction.air_models import BoundaryLayerAirDrag
-from rollingdisk.friction.euler_disk import (
+from rollingdisk.model.air_models import BoundaryLayerAirDrag
+from rollingdisk.scenarios.euler_disk import (
     AIR_DENSITY,
     AIR_VISCOSITY,
     EulerDisk,

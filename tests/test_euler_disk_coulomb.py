@@ -15,8 +15,8 @@ import json
 
 import pytest
 
-from rollingdisk.cli.main import main
-from rollingdisk.friction.euler_disk import EulerDisk, run_euler_disk
+from rollingdisk.cli.app import main
+from rollingdisk.scenarios.euler_disk import EulerDisk, run_euler_disk
 from rollingdisk.util.errors import ParameterError
 
 LOW = dict(alpha0=0.1, rolling_resistance=1e-2)

@@ -45,7 +45,7 @@ def _python(code: str, timeout: float = 60.0):
 
 
 def _cli(*argv, timeout: float = 60.0):
-    return _python("import sys\nfrom rollingdisk.cli.main import main\n"
+    return _python("import sys\nfrom rollingdisk.cli.app import main\n"
                    f"sys.exit(main({list(argv)!r}))", timeout=timeout)
 
 

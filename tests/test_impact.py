@@ -20,7 +20,7 @@ from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 
 import rollingdisk as rd
-from rollingdisk.friction import impact as im
+from rollingdisk.phases import impact as im
 from rollingdisk.symbolic import impact as si
 
 RNG_SEED = 20

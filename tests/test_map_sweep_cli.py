@@ -2,7 +2,7 @@
 
 import pytest
 
-from rollingdisk.cli.main import main
+from rollingdisk.cli.app import main
 
 pytest.importorskip("xarray")
 pytest.importorskip("matplotlib")

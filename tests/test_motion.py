@@ -1,4 +1,4 @@
-"""The whole motion (rollingdisk.friction.motion) and the coin toss (friction.toss).
+"""The whole motion (rollingdisk.phases.motion) and the coin toss (friction.toss).
 
 Sources of truth: conservation of energy (e = 1, mu = 0 impacts conserve it; otherwise
 E + dissipated + impact losses is constant), the closed-form rocking ratio of an upright
@@ -16,14 +16,14 @@ import numpy as np
 import pytest
 
 import rollingdisk as rd
-from rollingdisk.friction.impact import rim_change_ratio
-from rollingdisk.friction.motion import (
+from rollingdisk.phases.impact import rim_change_ratio
+from rollingdisk.phases.motion import (
     FlatSegment,
     FlightSegment,
     flat_friction,
     simulate_to_rest,
 )
-from rollingdisk.friction.toss import (
+from rollingdisk.scenarios.toss import (
     TossDistribution,
     energy_barrier,
     toss,

@@ -16,7 +16,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import rollingdisk as rd  # noqa: E402
-from rollingdisk.friction.motion import (  # noqa: E402
+from rollingdisk.phases.motion import (  # noqa: E402
     FlatSegment,
     FlightSegment,
     simulate_to_rest,

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import rollingdisk as rd
-from rollingdisk.integrate.stream import StreamSummary, write_columns
+from rollingdisk.results.stream import StreamSummary, write_columns
 from rollingdisk.util.progress import ProgressBar
 
 
@@ -90,8 +90,8 @@ def test_map_sweep_agrees_with_the_closed_form():
 
 @pytest.mark.slow  # a whole Euler run, about 9 s (the CLI tests cover the writer fast)
 def test_write_euler_disk_folder(tmp_path):
-    from rollingdisk.friction.euler_disk import EulerDisk, run_euler_disk
     from rollingdisk.plotting.reports import EULER_DISK_FILES, write_euler_disk
+    from rollingdisk.scenarios.euler_disk import EulerDisk, run_euler_disk
 
     result = run_euler_disk(EulerDisk(alpha0=0.05))
     out = write_euler_disk(result, tmp_path / "ed")
@@ -124,8 +124,8 @@ def test_coulomb_run_at_a_loose_tolerance_ends_with_a_status():
     """At rtol 0.5 the interpolant of a step leaves floating-point range: a status, not a
     private exception."""
     m = rd.steady_motion(rd.Disk(h=0.5), "rough", math.radians(45), Omega0=0.5)
-    from rollingdisk.friction.coulomb import rolling_state
-    from rollingdisk.friction.hybrid import simulate_coulomb
+    from rollingdisk.ivp.hybrid import simulate_coulomb
+    from rollingdisk.model.coulomb import rolling_state
 
     y0 = list(rolling_state(m.disk, m.initial_state()))
     y0[6] += 0.01

@@ -18,7 +18,7 @@ from scipy.optimize import brentq
 
 import rollingdisk as rd
 from conftest import random_states
-from rollingdisk.friction import coulomb as eq
+from rollingdisk.model import coulomb as eq
 
 N = 60
 DISK = rd.Disk(0.17)

@@ -13,7 +13,7 @@ import pytest
 matplotlib.use("Agg")
 
 import rollingdisk as rd  # noqa: E402
-from rollingdisk.friction.euler_disk import EulerDisk, run_euler_disk  # noqa: E402
+from rollingdisk.scenarios.euler_disk import EulerDisk, run_euler_disk  # noqa: E402
 from rollingdisk.util.display import MAX_REPR  # noqa: E402
 
 SCALED = rd.Disk.from_dimensions(radius=0.0375, thickness=0.0127, mass=0.45)

@@ -1,6 +1,6 @@
 """Robustness sweep of the command line (issue 8): bad input never gives a traceback.
 
-Sources of truth: the CLI contract of rollingdisk.cli.main (exit 2 and one line on stderr for
+Sources of truth: the CLI contract of rollingdisk.cli.app (exit 2 and one line on stderr for
 bad input, exit 1 only for a bug, 130/143 on Ctrl-C/SIGTERM), the library's contract for
 errors (TypeError/ValueError or their ParameterTypeError/ParameterError subclasses), strict
 JSON (no NaN, no infinity), and "every output is complete or absent" (nothing is left
@@ -27,7 +27,7 @@ import pytest  # noqa: E402
 from hypothesis import HealthCheck, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-from rollingdisk.cli.main import main
+from rollingdisk.cli.app import main
 
 SRC = str(Path(__file__).resolve().parents[1] / "src")
 

@@ -24,8 +24,8 @@ from scipy.integrate import solve_ivp
 
 import rollingdisk as rd
 from conftest import random_states
-from rollingdisk.friction import coulomb as eq
-from rollingdisk.friction import fastsegment as fs
+from rollingdisk.ivp import fastsegment as fs
+from rollingdisk.model import coulomb as eq
 
 N = 40
 METHODS = ["scipy", pytest.param("compiled", marks=pytest.mark.skipif(

@@ -209,7 +209,7 @@ def test_compiled_integrator_takes_the_same_steps_as_scipy(ground, y0, h):
 def test_compiled_rhs_matches_the_numpy_kernels():
     import sys
 
-    core = sys.modules["rollingdisk.integrate.numba_core"]
+    core = sys.modules["rollingdisk.engine.numba_core"]
     rng = np.random.default_rng(7)
     for _ in range(50):
         h = rng.uniform(0, 2)
@@ -517,7 +517,7 @@ def test_the_integrator_needs_no_private_scipy_module():
 
     code = ("import sys\n"
             "sys.modules['scipy.integrate._ivp.dop853_coefficients'] = None\n"
-            "import rollingdisk as rd, rollingdisk.integrate.dop853 as d\n"
+            "import rollingdisk as rd, rollingdisk.engine.dop853 as d\n"
             "tr = rd.simulate(rd.Disk(h=0.1), 'rough', (0, 1.0),"
             " [0, 0, 0, 0.3, 0, 0, 0.2, 3.0], method='dop853')\n"
             "assert tr.status == 'completed', tr.status\n"

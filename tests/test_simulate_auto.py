@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 import rollingdisk as rd
-from rollingdisk.integrate import jit as _jit
-from rollingdisk.integrate import pycore as _pycore
+from rollingdisk.engine import jit as _jit
+from rollingdisk.engine import pycore as _pycore
 
 Y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
 TICK = 0.01  # "seconds" between two readings of the fake clock: one uncompiled chunk

@@ -1,7 +1,7 @@
 """The two ways of running the one DOP853 source (issue 9): uncompiled and compiled.
 
-The uncompiled run (rollingdisk.integrate.pycore) must take the steps of the compiled one
-(rollingdisk.integrate.numba_core), a run may switch between them mid-way without changing its
+The uncompiled run (rollingdisk.engine.pycore) must take the steps of the compiled one
+(rollingdisk.engine.numba_core), a run may switch between them mid-way without changing its
 steps, the coefficients are scipy's own table, and a cold compile cache is filled by one
 background compiler at a time.  Also: error_control="reduced" keeps the accuracy the
 full-state tests ask for.
@@ -18,8 +18,8 @@ import numpy as np
 import pytest
 
 from rollingdisk import Disk, energy_drift, jit_compile, simulate, steady_motion
-from rollingdisk.integrate import jit as _jit
-from rollingdisk.integrate import jit as _simulate
+from rollingdisk.engine import jit as _jit
+from rollingdisk.engine import jit as _simulate
 
 SRC = os.path.dirname(os.path.dirname(_jit.__file__))
 
@@ -104,7 +104,7 @@ def test_coefficients_are_scipys_table():
     # module scipy's own DOP853 uses
     from scipy.integrate._ivp import dop853_coefficients as ref
 
-    from rollingdisk.integrate import dop853 as _dop853
+    from rollingdisk.engine import dop853 as _dop853
 
     for name in ("N_STAGES", "N_STAGES_EXTENDED", "INTERPOLATOR_POWER", "A", "B", "C", "E3",
                  "E5", "D"):
@@ -117,7 +117,7 @@ def test_a_second_background_compiler_leaves_at_once(tmp_path):
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path), PYTHONPATH=SRC)
     with open(tmp_path / "rollingdisk-jit.lock", "a") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)  # a compiler at work
-        res = subprocess.run([sys.executable, "-m", "rollingdisk.integrate.jit"], env=env,
+        res = subprocess.run([sys.executable, "-m", "rollingdisk.engine.jit"], env=env,
                              capture_output=True, text=True, timeout=60)
     assert res.returncode == 0, res.stderr
     assert not any(p.name.endswith(".ready") for p in tmp_path.iterdir())
@@ -131,7 +131,7 @@ def test_cold_cache_run_continues_uncompiled_and_a_background_process_fills_the_
 
     env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path), PYTHONPATH=SRC)
     code = ("import sys, rollingdisk as rd\n"
-            "from rollingdisk.integrate import jit as _jit\n"
+            "from rollingdisk.engine import jit as _jit\n"
             "_jit.PY_BUDGET = 0.0\n"
             "tr = rd.simulate(rd.Disk(h=0.1), 'rough', (0, 20), [0, 0, 0, 0.3, 0, 0, 2, 0.5])\n"
             "assert tr.status == 'completed'\n"
@@ -185,7 +185,7 @@ def test_error_control_is_validated():
 
 def test_uncompiled_run_falls_back_to_ieee_arithmetic(uncompiled, monkeypatch):
     # math.sin(inf) raises where numba and numpy give nan: the chunk is rerun with numpy
-    from rollingdisk.integrate import pycore as _pycore
+    from rollingdisk.engine import pycore as _pycore
 
     calls = []
 

@@ -24,7 +24,7 @@ from rollingdisk.util.errors import ParameterError
 @pytest.fixture(scope="module")
 def core():
     rd.jit_compile()
-    from rollingdisk.integrate import jit as _simulate
+    from rollingdisk.engine import jit as _simulate
 
     return _simulate._core
 
@@ -169,7 +169,7 @@ def test_taylor_options_and_bad_input():
 def test_cli_method_taylor(capsys):
     import json
 
-    from rollingdisk.cli.main import main
+    from rollingdisk.cli.app import main
 
     argv = ["simulate", "--method", "taylor", "--h", "0.1", "--theta0", "0.3", "--Omega0", "2",
             "--kick", "0.01", "--t-end", "100", "--rtol", "1e-12", "--atol", "1e-12", "--json"]

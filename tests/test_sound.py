@@ -16,8 +16,7 @@ import wave
 import numpy as np
 import pytest
 
-from rollingdisk.cli.main import main
-from rollingdisk.friction.euler_disk import EulerDisk, run_euler_disk
+from rollingdisk.cli.app import main
 from rollingdisk.plotting.sound import (
     NYQUIST_FADE,
     chirp,
@@ -26,6 +25,7 @@ from rollingdisk.plotting.sound import (
     sound_window,
     write_wav,
 )
+from rollingdisk.scenarios.euler_disk import EulerDisk, run_euler_disk
 from rollingdisk.util.errors import ParameterError
 
 RATE = 22050

@@ -44,7 +44,7 @@ def test_summaries_match_closed_form(ground):
 
 def test_reduced_energy_is_rollingdisk_energy():
     """The energy kept along a run is rollingdisk.energy of the full rough state."""
-    from rollingdisk.integrate import batch as core
+    from rollingdisk.sweep import batch as core
 
     y = np.array([0.1, -0.2, 0.0, 0.4, 0.3, 0.5, -1.2, 2.0])  # X, Y, psi, theta, phi, w1..3
     x = y[[3, 5, 6, 7]]

@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from rollingdisk.cli.main import main
+from rollingdisk.cli.app import main
 
 pytest.importorskip("xarray")
 

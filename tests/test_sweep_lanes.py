@@ -1,4 +1,4 @@
-"""The sweeps' vector lanes (rollingdisk.integrate.lanes, batch.run_batch_lanes) against
+"""The sweeps' vector lanes (rollingdisk.engine.lanes, batch.run_batch_lanes) against
 independent truth: numpy's libm for the lanes' sin, cos, log and exp; the scalar Taylor
 kernel (held to the model's kernels by tests/test_simulate_taylor.py) for the traced jets,
 step sizes, energies and samples; the general step (batch._tay_advance) for the common
@@ -16,9 +16,8 @@ from hypothesis import strategies as st
 
 numba = pytest.importorskip("numba")
 
-from rollingdisk.integrate import batch  # noqa: E402
-from rollingdisk.integrate import numba_core as nc  # noqa: E402
-from rollingdisk.integrate.lanes import (  # noqa: E402
+from rollingdisk.engine import numba_core as nc  # noqa: E402
+from rollingdisk.engine.lanes import (  # noqa: E402
     LANES,
     MAX_ORDER,
     _lane_jet_rough,
@@ -27,7 +26,7 @@ from rollingdisk.integrate.lanes import (  # noqa: E402
     _lane_plain,
     _lane_samples,
 )
-from rollingdisk.sweep import executors  # noqa: E402
+from rollingdisk.sweep import batch, executors  # noqa: E402
 from rollingdisk.sweep.grid import Perturbation, SweepGrid, _Spec  # noqa: E402
 
 W = LANES

@@ -23,7 +23,7 @@ sweep = pytest.importorskip("rollingdisk.sweep")
 
 @pytest.fixture(scope="module")
 def nc():
-    from rollingdisk.integrate import numba_core as _numba_core
+    from rollingdisk.engine import numba_core as _numba_core
 
     return _numba_core
 

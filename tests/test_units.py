@@ -19,7 +19,6 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import rollingdisk as rd
-from rollingdisk.friction.euler_disk import EulerDisk
 from rollingdisk.model.disk import STANDARD_GRAVITY
 from rollingdisk.model.units import (
     DISKS,
@@ -29,6 +28,7 @@ from rollingdisk.model.units import (
     parse_mass,
     si_fields,
 )
+from rollingdisk.scenarios.euler_disk import EulerDisk
 
 SRC = str(Path(__file__).resolve().parents[1] / "src")
 

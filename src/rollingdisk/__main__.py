@@ -2,6 +2,6 @@
 
 import sys
 
-from rollingdisk_cli import main
+from rollingdisk.cli.entry import main
 
 sys.exit(main())

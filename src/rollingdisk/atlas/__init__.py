@@ -1,7 +1,7 @@
 """The atlas: everything about one disk in one HTML page (``rollingdisk atlas``)."""
 
-from rollingdisk.atlas.build import (
-    build_atlas as build_atlas,
-)
+from rollingdisk.util.lazy import attach as _attach
 
-__all__ = ["build_atlas"]
+__getattr__, __dir__, __all__ = _attach(__name__, {
+    "build_atlas": "rollingdisk.atlas.build",
+})

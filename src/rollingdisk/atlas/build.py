@@ -15,7 +15,7 @@
   perturbation, with their plots (paths of C and P, ``theta(t)``, energy error, contact
   force) and a 3D animation each,
 * Euler's disk: this disk when it has a size and a mass, else the commercial toy
-  (:mod:`rollingdisk.friction.euler_disk`, its own ``h = 0.169``), run to its end with
+  (:mod:`rollingdisk.scenarios.euler_disk`, its own ``h = 0.169``), run to its end with
   creep friction and rolling resistance, with the fitted and the predicted exponents
   (run in a second process alongside the other steps),
 * ``index.html`` showing it all, with relative image paths and no external resources: a
@@ -55,7 +55,7 @@ ATLAS_FILES = ("thresholds.json", "existence.png", "stability.png", "varpi2.png"
 #: The atlas's sound of Euler's disk: the last seconds of the run in real time, at a rate
 #: that keeps the file near 350 KB (the whirr ends below 200 Hz on the toy).
 EULER_SOUND = {"rate": 22050, "speed": 1.0, "max_seconds": 8.0}
-#: The atlas's run past the guards (:func:`rollingdisk.friction.motion.simulate_to_rest`):
+#: The atlas's run past the guards (:func:`rollingdisk.phases.motion.simulate_to_rest`):
 #: a thick disk dropped from rest, tilted from upright, onto Coulomb ground; it bounces,
 #: rocks over its tread (rim changes) and settles upright.
 TO_REST = {"h": 0.3, "Z_C": 1.6, "theta": 0.12, "e": 0.5, "mu": 0.5, "t_max": 100.0}
@@ -142,7 +142,7 @@ def steady_trajectory(h: float, ground: str, theta0: float, *, Omega0: float | N
 
     Returns ``(motion, stability, trajectory)``.
     """
-    from rollingdisk.integrate.simulation import simulate_steady
+    from rollingdisk.ivp.simulation import simulate_steady
     from rollingdisk.theory.oscillations import stability
     from rollingdisk.theory.steady import steady_motion
 
@@ -412,10 +412,10 @@ def _exact_section(motion, out: Path, dpi: int, files: list) -> dict:
 
 
 def _to_rest_section(out: Path, quick: bool, files: list) -> dict:
-    """The run :data:`TO_REST` to rest (:func:`~rollingdisk.friction.motion.simulate_to_rest`),
+    """The run :data:`TO_REST` to rest (:func:`~rollingdisk.phases.motion.simulate_to_rest`),
     its animation ``to_rest.gif`` (not when ``quick``) and its record for the page."""
-    from rollingdisk.friction.ground import Coulomb
-    from rollingdisk.friction.motion import FlightSegment, simulate_to_rest
+    from rollingdisk.model.ground import Coulomb
+    from rollingdisk.phases.motion import FlightSegment, simulate_to_rest
     from rollingdisk.plotting.motion_anim import animate_motion
 
     r = TO_REST
@@ -478,9 +478,9 @@ def _euler_disk_in_child(out: Path, quick: bool, dpi: int, disk: Disk | None = N
     has a radius and a mass, else the commercial Euler's disk."""
     from matplotlib.figure import Figure
 
-    from rollingdisk.friction.euler_disk import EulerDisk, run_euler_disk
     from rollingdisk.plotting.plots import plot_euler_disk
     from rollingdisk.plotting.sound import chirp, plot_chirp_frequency, sound_window, write_wav
+    from rollingdisk.scenarios.euler_disk import EulerDisk, run_euler_disk
 
     _quiet_signals()
     alpha0 = 0.05 if quick else 0.3
@@ -532,8 +532,8 @@ def _floats(d):
 
 
 def _motion_record(motion, stab, traj, kick) -> dict:
-    from rollingdisk.integrate.measure import compare_with_theory
     from rollingdisk.plotting.plots import trajectory_series
+    from rollingdisk.results.measure import compare_with_theory
 
     theta = trajectory_series(traj, "theta")
     E = trajectory_series(traj, "E")

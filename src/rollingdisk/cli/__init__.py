@@ -1,5 +1,10 @@
-"""The ``rollingdisk`` command line (:mod:`rollingdisk.cli.main`; one module per command)."""
+"""The ``rollingdisk`` command line: one module per command, the parser and the exit-status
+contract in :mod:`.app`, the console script's entry (signal handlers first) in :mod:`.entry`.
+"""
 
-from rollingdisk.cli.main import build_parser, main
+from rollingdisk.util.lazy import attach as _attach
 
-__all__ = ["main", "build_parser"]
+__getattr__, __dir__, __all__ = _attach(__name__, {
+    "main": "rollingdisk.cli.entry",
+    "build_parser": "rollingdisk.cli.app",
+})

@@ -1,5 +1,5 @@
 """``rollingdisk simulate --ground coulomb``: the Coulomb ground, its start and its run (a
-helper of :mod:`rollingdisk.cli.simulate`; the physics is :mod:`rollingdisk.friction`)."""
+helper of :mod:`rollingdisk.cli.simulate`; the physics is :mod:`rollingdisk.ivp.hybrid`)."""
 
 from __future__ import annotations
 
@@ -13,7 +13,7 @@ FRICTION = ("mu", "mu_k", "rolling_resistance", "pivot", "air")
 
 
 def coulomb_ground(args, disk):
-    """The :class:`~rollingdisk.friction.ground.Coulomb` ground the options ask for, or None."""
+    """The :class:`~rollingdisk.model.ground.Coulomb` ground the options ask for, or None."""
     extra = [f"--{n.replace('_', '-')}" for n in FRICTION if getattr(args, n) is not None]
     if getattr(args, "until_rest", False):
         extra.append("--until-rest")
@@ -40,7 +40,7 @@ def coulomb_ground(args, disk):
 
 def _coulomb_state(args, disk, motion) -> list[float]:
     """The start on Coulomb ground (the smooth layout, with the velocity of C)."""
-    from rollingdisk.friction.coulomb import rolling_state
+    from rollingdisk.model.coulomb import rolling_state
     from rollingdisk.model.state import state_index
 
     if motion is None:
@@ -56,9 +56,9 @@ def _coulomb_state(args, disk, motion) -> list[float]:
 
 def run_coulomb(args, disk, ground, motion) -> tuple[dict, list]:
     """The hybrid rolling/sliding run; the CSV is written last (a failure leaves none)."""
-    from rollingdisk.friction.coulomb import MODE_NAMES
-    from rollingdisk.friction.hybrid import energy_balance, simulate_coulomb
-    from rollingdisk.integrate.stream import write_columns
+    from rollingdisk.ivp.hybrid import energy_balance, simulate_coulomb
+    from rollingdisk.model.coulomb import MODE_NAMES
+    from rollingdisk.results.stream import write_columns
     from rollingdisk.util.files import atomic_file
 
     y0 = _coulomb_state(args, disk, motion)
@@ -92,8 +92,8 @@ def run_coulomb(args, disk, ground, motion) -> tuple[dict, list]:
 
 def run_until_rest(args, disk, ground, motion) -> tuple[dict, list]:
     """``--until-rest``: the motion through every phase to rest (or the end time) with
-    :func:`rollingdisk.friction.motion.simulate_to_rest`; its summary and phase changes."""
-    from rollingdisk.friction.motion import simulate_to_rest
+    :func:`rollingdisk.phases.motion.simulate_to_rest`; its summary and phase changes."""
+    from rollingdisk.phases.motion import simulate_to_rest
 
     if args.out is not None:
         raise CLIError("rollingdisk simulate: --out is not written with --until-rest (a run "

@@ -28,15 +28,15 @@ from rollingdisk.cli._format import disk_line, with_si
 
 
 def configure(sub):
-    from rollingdisk.friction.euler_disk import (
+    from rollingdisk.plotting.reports import EULER_DISK_FILES
+    from rollingdisk.plotting.sound import MAX_SECONDS, RATE
+    from rollingdisk.scenarios.euler_disk import (
         AIR_DENSITY,
         AIR_LAWS,
         AIR_VISCOSITY,
         FRICTION_LAWS,
         EulerDisk,
     )
-    from rollingdisk.plotting.reports import EULER_DISK_FILES
-    from rollingdisk.plotting.sound import MAX_SECONDS, RATE
 
     toy = EulerDisk()
     p = sub.add_parser(
@@ -117,9 +117,9 @@ def configure(sub):
 
 
 def run(args) -> int:
-    from rollingdisk.friction.euler_disk import AIR_VISCOSITY, run_euler_disk
     from rollingdisk.plotting.reports import EULER_DISK_FILES, write_euler_disk
     from rollingdisk.plotting.sound import chirp, write_wav
+    from rollingdisk.scenarios.euler_disk import AIR_VISCOSITY, run_euler_disk
     from rollingdisk.util.files import check_replaceable, check_writable
     from rollingdisk.util.progress import ProgressBar
 
@@ -176,7 +176,7 @@ def _with_si(summary: dict, disk) -> dict:
 def _toy(args, parameters: dict):
     """The toy the options give: the commercial Euler's Disk unless a disk is named or
     sized (which must have a mass); ``--mass``/``--gravity`` alone change only those."""
-    from rollingdisk.friction.euler_disk import EulerDisk
+    from rollingdisk.scenarios.euler_disk import EulerDisk
     from rollingdisk.util.errors import ParameterError
 
     sized = args.h is not None or any(getattr(args, k) is not None for k in DISK_OPTIONS

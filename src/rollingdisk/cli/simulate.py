@@ -194,9 +194,9 @@ def _with_si(record: dict, disk) -> dict:
 def _run_ideal(args, disk, motion) -> dict:
     """Rough or smooth ground: stream the run (CSV, measurements) and summarize it."""
     import rollingdisk as rd
-    from rollingdisk.integrate.measure import compare_with_theory, oscillation_frequency
-    from rollingdisk.integrate.simulation import DEFAULT_ATOL, DEFAULT_RTOL
-    from rollingdisk.integrate.stream import StreamSummary
+    from rollingdisk.ivp.simulation import DEFAULT_ATOL, DEFAULT_RTOL
+    from rollingdisk.results.measure import compare_with_theory, oscillation_frequency
+    from rollingdisk.results.stream import StreamSummary
     from rollingdisk.util.files import atomic_file
 
     options = dict(rtol=DEFAULT_RTOL if args.rtol is None else args.rtol,
@@ -207,7 +207,7 @@ def _run_ideal(args, disk, motion) -> dict:
         y0, _ = initial_state(args, args.ground, "simulate")
     else:
         # the measured frequency or growth rate wants ~20 points per 1/|varpi|
-        # (rollingdisk.integrate.measure), whichever method runs: the Taylor method that
+        # (rollingdisk.results.measure), whichever method runs: the Taylor method that
         # "auto" runs once compiled code is loaded takes steps several times longer
         varpi2 = rd.stability(motion).varpi2
         if math.isfinite(varpi2) and varpi2 != 0.0:

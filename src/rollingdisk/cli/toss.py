@@ -1,7 +1,7 @@
 """``rollingdisk toss``: heads, tails or edge over random tosses of one disk.
 
 Each toss runs through flight, impacts, rolling and sliding
-(:func:`rollingdisk.friction.motion.simulate_to_rest`) until its outcome is certain (the
+(:func:`rollingdisk.phases.motion.simulate_to_rest`) until its outcome is certain (the
 energy below the balancing barrier) or the disk is at rest; docs/motion.md.
 
 Examples::
@@ -56,7 +56,7 @@ def configure(subparsers):
 
 def run(args) -> int:
     """Run the ensemble, print (and plot) its frequencies; 0 when done."""
-    from rollingdisk.friction.toss import TOSS_OUTCOMES, toss_ensemble
+    from rollingdisk.scenarios.toss import TOSS_OUTCOMES, toss_ensemble
     from rollingdisk.util.files import check_writable
 
     disk = disk_from_args(args)
@@ -81,7 +81,7 @@ def run(args) -> int:
 def _plot(res, args) -> None:
     from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
 
-    from rollingdisk.friction.toss import TOSS_OUTCOMES
+    from rollingdisk.scenarios.toss import TOSS_OUTCOMES
     from rollingdisk.util.files import atomic_file
 
     fig = Figure(figsize=(5, 3.5))

@@ -15,6 +15,10 @@ Examples
 >>> explore(h=0.17, ground="rough")     # doctest: +SKIP
 """
 
-from .server import ExplorerServer, explore, make_server
+from rollingdisk.util.lazy import attach as _attach
 
-__all__ = ["explore", "make_server", "ExplorerServer"]
+__getattr__, __dir__, __all__ = _attach(__name__, {
+    "explore": "rollingdisk.explore.server",
+    "make_server": "rollingdisk.explore.server",
+    "ExplorerServer": "rollingdisk.explore.server",
+})

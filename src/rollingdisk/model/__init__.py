@@ -1,80 +1,50 @@
-"""Section 2 of the paper: the disk, its state layouts, contact geometry and equations of motion.
+"""The model of the disk (section 2 of the paper and the contact laws beyond it): the disk,
+its state layouts, contact geometry, the equations of motion on the ideal grounds, the guards
+where a phase of motion ends, the ground laws (Coulomb friction, rolling resistance, pivoting
+friction, air) and their kernels, and how a run ends (``outcomes``).
 
-The lowest layer of the theory: numpy only (no scipy, no numba).
+The lowest layer of the physics: numpy only (no scipy, no numba).
 """
 
-from rollingdisk.model.disk import (
-    DEFAULT_H as DEFAULT_H,
-)
-from rollingdisk.model.disk import (
-    GROUNDS as GROUNDS,
-)
-from rollingdisk.model.disk import (
-    H_MAX as H_MAX,
-)
-from rollingdisk.model.disk import (
-    STANDARD_GRAVITY as STANDARD_GRAVITY,
-)
-from rollingdisk.model.disk import (
-    Disk as Disk,
-)
-from rollingdisk.model.disk import (
-    check_ground as check_ground,
-)
-from rollingdisk.model.disk import (
-    check_h as check_h,
-)
-from rollingdisk.model.equations import (
-    contact_force as contact_force,
-)
-from rollingdisk.model.equations import (
-    contact_point as contact_point,
-)
-from rollingdisk.model.equations import (
-    energy as energy,
-)
-from rollingdisk.model.equations import (
-    equations_of_motion as equations_of_motion,
-)
-from rollingdisk.model.equations import (
-    omega_dot as omega_dot,
-)
-from rollingdisk.model.equations import (
-    velocity_of_C as velocity_of_C,
-)
-from rollingdisk.model.geometry import (
-    h_tilde as h_tilde,
-)
-from rollingdisk.model.state import (
-    ROUGH_STATE as ROUGH_STATE,
-)
-from rollingdisk.model.state import (
-    SMOOTH_STATE as SMOOTH_STATE,
-)
-from rollingdisk.model.state import (
-    state_index as state_index,
-)
-from rollingdisk.model.state import (
-    state_names as state_names,
-)
+from rollingdisk.util.lazy import attach as _attach
 
-__all__ = [
-    "Disk",
-    "DEFAULT_H",
-    "GROUNDS",
-    "H_MAX",
-    "STANDARD_GRAVITY",
-    "check_ground",
-    "check_h",
-    "ROUGH_STATE",
-    "SMOOTH_STATE",
-    "state_names",
-    "state_index",
-    "h_tilde",
-    "equations_of_motion",
-    "omega_dot",
-    "contact_force",
-    "energy",
-    "contact_point",
-    "velocity_of_C",
-]
+__getattr__, __dir__, __all__ = _attach(__name__, {
+    "Disk": "rollingdisk.model.disk",
+    "DEFAULT_H": "rollingdisk.model.disk",
+    "GROUNDS": "rollingdisk.model.disk",
+    "H_MAX": "rollingdisk.model.disk",
+    "STANDARD_GRAVITY": "rollingdisk.model.disk",
+    "check_ground": "rollingdisk.model.disk",
+    "check_h": "rollingdisk.model.disk",
+    "ROUGH_STATE": "rollingdisk.model.state",
+    "SMOOTH_STATE": "rollingdisk.model.state",
+    "state_names": "rollingdisk.model.state",
+    "state_index": "rollingdisk.model.state",
+    "h_tilde": "rollingdisk.model.geometry",
+    "equations_of_motion": "rollingdisk.model.equations",
+    "omega_dot": "rollingdisk.model.equations",
+    "contact_force": "rollingdisk.model.equations",
+    "energy": "rollingdisk.model.equations",
+    "contact_point": "rollingdisk.model.equations",
+    "velocity_of_C": "rollingdisk.model.equations",
+    "GuardEvent": "rollingdisk.model.events",
+    "LiftOff": "rollingdisk.model.events",
+    "EdgeContact": "rollingdisk.model.events",
+    "FellFlat": "rollingdisk.model.events",
+    "GUARDS": "rollingdisk.model.events",
+    "STATUSES": "rollingdisk.model.events",
+    "guard_events": "rollingdisk.model.events",
+    "Coulomb": "rollingdisk.model.ground",
+    "RollingResistance": "rollingdisk.model.ground",
+    "PivotFriction": "rollingdisk.model.ground",
+    "AirDrag": "rollingdisk.model.ground",
+    "check_any_ground": "rollingdisk.model.ground",
+    "ground_name": "rollingdisk.model.ground",
+    "angular_velocity_xyz": "rollingdisk.model.ground",
+    "COULOMB_STATE": "rollingdisk.model.coulomb",
+    "MODE_NAMES": "rollingdisk.model.coulomb",
+    "coulomb_rhs": "rollingdisk.model.coulomb",
+    "coulomb_contact": "rollingdisk.model.coulomb",
+    "coulomb_energy": "rollingdisk.model.coulomb",
+    "rolling_state": "rollingdisk.model.coulomb",
+})

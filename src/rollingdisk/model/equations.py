@@ -24,9 +24,9 @@ Every formula here is checked against the sympy derivation in :mod:`rollingdisk.
 by ``tests/test_derivation.py``; see ``docs/errata.md``.
 
 The kernels of the two ideal grounds live in one namespace (with the geometry and state
-kernels they import) because :mod:`rollingdisk.integrate.numba_core` compiles them from this
+kernels they import) because :mod:`rollingdisk.engine.numba_core` compiles them from this
 module's source and re-binds the kernels they call.  The Coulomb modes are in
-:mod:`rollingdisk.friction.coulomb`.
+:mod:`rollingdisk.model.coulomb`.
 """
 
 from __future__ import annotations

@@ -5,7 +5,7 @@ Each outcome has an integer ``code`` (what the compiled kernels and the sweeps' 
 store), a ``name`` (what a :class:`~rollingdisk.Trajectory`, an
 :class:`~rollingdisk.ExactMotion`, a sweep's ``status_name`` and the JSON say) and a
 ``meaning`` in words.  The table is documented once, in ``docs/outcomes.md``; the guards
-that produce the physical ends are in :mod:`rollingdisk.integrate.events`.
+that produce the physical ends are in :mod:`rollingdisk.model.events`.
 """
 
 from __future__ import annotations

@@ -226,7 +226,7 @@ DISKS: dict[str, NamedDisk] = {d.name: d for d in (
     NamedDisk("euler-disk", 0.0375, 0.0127, 0.45,
               "the commercial Euler's Disk (Tangent Toy Co.): 75 mm across, 12.7 mm (1/2 in) "
               "thick; sold at about 0.4-0.45 kg (Moffatt, Nature 404 (2000) 833, quotes "
-              "a ~ 3.8 cm and uses m = 0.4 kg); as rollingdisk.friction.euler_disk.EulerDisk"),
+              "a ~ 3.8 cm and uses m = 0.4 kg); as rollingdisk.scenarios.euler_disk.EulerDisk"),
     NamedDisk("euro-1", 0.02325 / 2, 0.00233, 0.0075,
               "1-euro coin: 23.25 mm diameter, 2.33 mm thick, 7.5 g (European Central Bank, "
               "common sides of the euro coins)"),

@@ -1,15 +1,15 @@
-"""3D animation of a whole motion to rest (:func:`rollingdisk.friction.motion.simulate_to_rest`).
+"""3D animation of a whole motion to rest (:func:`rollingdisk.phases.motion.simulate_to_rest`).
 
-A :class:`~rollingdisk.friction.motion.MotionResult` is a chain of segments: contact on a
+A :class:`~rollingdisk.phases.motion.MotionResult` is a chain of segments: contact on a
 rim edge (a Coulomb :class:`~rollingdisk.Trajectory`), free flight
-(:class:`~rollingdisk.friction.motion.FlightSegment`, closed form) and the disk lying flat
-(:class:`~rollingdisk.friction.motion.FlatSegment`).  :func:`motion_poses` samples the
+(:class:`~rollingdisk.phases.motion.FlightSegment`, closed form) and the disk lying flat
+(:class:`~rollingdisk.phases.motion.FlatSegment`).  :func:`motion_poses` samples the
 drawn disk at evenly spaced times across all of them, each pose from its own segment's
 state; :func:`animate_motion` paints them with the drawing code of
 :mod:`rollingdisk.plotting.animation` (:func:`~rollingdisk.plotting.animation.draw_scene`).
 
 Heights: touching a rim edge ``Z_C = -z_P`` (eq. 7, the contact constraint); in flight
-``Z_C`` of the free-body state (:data:`~rollingdisk.friction.impact.FREE_STATE`); flat
+``Z_C`` of the free-body state (:data:`~rollingdisk.phases.impact.FREE_STATE`); flat
 ``Z_C = h``.  Units m = a = g = 1.
 """
 
@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from rollingdisk.friction.motion import FlatSegment, FlightSegment, MotionResult
+from rollingdisk.phases.motion import FlatSegment, FlightSegment, MotionResult
 from rollingdisk.plotting.animation import (
     FRAMES_RANGE,
     DiskPose,
@@ -116,7 +116,7 @@ def motion_poses(result: MotionResult, n_frames: int = 90, *,
     Parameters
     ----------
     result : MotionResult
-        From :func:`~rollingdisk.friction.motion.simulate_to_rest`.
+        From :func:`~rollingdisk.phases.motion.simulate_to_rest`.
     n_frames : int
         Number of frames, in :data:`~rollingdisk.plotting.animation.FRAMES_RANGE`.
     n : int
@@ -134,7 +134,7 @@ def motion_poses(result: MotionResult, n_frames: int = 90, *,
     Raises
     ------
     ParameterTypeError
-        ``result`` is not a :class:`~rollingdisk.friction.motion.MotionResult`.
+        ``result`` is not a :class:`~rollingdisk.phases.motion.MotionResult`.
     ParameterError
         ``n_frames`` or ``n`` out of range.
     """
@@ -159,9 +159,9 @@ def motion_poses(result: MotionResult, n_frames: int = 90, *,
 
 def motion_phases(result: MotionResult, times) -> list[str]:
     """The phase at each time: ``"rolling"``, ``"sliding"`` (and the pivot-stuck modes of
-    :data:`~rollingdisk.friction.MODE_NAMES`) on a rim edge, ``"flight"``, ``"flat"``, or
+    :data:`~rollingdisk.model.coulomb.MODE_NAMES`) on a rim edge, ``"flight"``, ``"flat"``, or
     ``"rest"`` (past the last segment of a run ``"at-rest"``, or a flat disk stopped)."""
-    from rollingdisk.friction.coulomb import MODE_NAMES
+    from rollingdisk.model.coulomb import MODE_NAMES
 
     result = _check_result(result)
     tf = np.atleast_1d(np.asarray(times, float))
@@ -225,7 +225,7 @@ def animate_motion(result: MotionResult, out, *, n_frames: int = 90, fps: int = 
     Parameters
     ----------
     result : MotionResult
-        From :func:`~rollingdisk.friction.motion.simulate_to_rest`.
+        From :func:`~rollingdisk.phases.motion.simulate_to_rest`.
     out : path-like
         ``.gif``, or ``.mp4`` when ffmpeg is installed; its folder must exist.
     n_frames, fps, dpi, size

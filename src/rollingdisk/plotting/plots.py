@@ -980,7 +980,7 @@ def euler_disk_title(result) -> str:
 
 
 def plot_euler_disk(result, fig=None, *, title: str | None = None) -> dict:
-    """Euler's disk run to its end (:func:`rollingdisk.friction.euler_disk.run_euler_disk`).
+    """Euler's disk run to its end (:func:`rollingdisk.scenarios.euler_disk.run_euler_disk`).
 
     ``title``: by default :func:`euler_disk_title`; ``""`` for none.
 

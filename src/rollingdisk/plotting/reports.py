@@ -9,8 +9,8 @@ import json
 
 import numpy as np
 
-from rollingdisk.integrate.stream import write_columns
 from rollingdisk.plotting.plots import check_dpi, plot_euler_disk, plot_exact, save_figure
+from rollingdisk.results.stream import write_columns
 from rollingdisk.util.checks import check_int
 from rollingdisk.util.errors import ParameterError
 from rollingdisk.util.files import atomic_dir, check_replaceable
@@ -27,7 +27,7 @@ def write_euler_disk(result, out, *, dpi: int = 90):
     Parameters
     ----------
     result : EulerDiskResult
-        From :func:`rollingdisk.friction.euler_disk.run_euler_disk`.
+        From :func:`rollingdisk.scenarios.euler_disk.run_euler_disk`.
     out : path-like
         The folder: new, empty, or one written here before (it is replaced as a whole;
         :func:`~rollingdisk.util.files.check_replaceable` refuses any other).

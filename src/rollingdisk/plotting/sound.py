@@ -3,7 +3,7 @@
 The contact point of a disk rolling in place runs round its circle at the precession rate
 ``Omega = d psi/dt`` (eq. 2), so the toy's whirr has the frequency ``f = Omega / (2 pi)``
 [Hz], rising to the end.  :func:`chirp` synthesizes it from a run of
-:func:`rollingdisk.friction.euler_disk.run_euler_disk` by phase integration, ``phase(tau) =
+:func:`rollingdisk.scenarios.euler_disk.run_euler_disk` by phase integration, ``phase(tau) =
 2 pi int f dtau`` (no jumps in phase when ``f`` changes, unlike ``sin(2 pi f(t) t)``), with
 the run's time compressed by ``speed`` and the pitch kept; :func:`write_wav` writes 16-bit
 mono PCM with the standard library's :mod:`wave`, whole or not at all.
@@ -12,7 +12,7 @@ Only numpy at import; matplotlib when :func:`plot_chirp_frequency` draws.
 
 Examples
 --------
->>> from rollingdisk.friction.euler_disk import EulerDisk, run_euler_disk
+>>> from rollingdisk.scenarios.euler_disk import EulerDisk, run_euler_disk
 >>> r = run_euler_disk(EulerDisk(alpha0=0.05, rolling_resistance=5e-3), predict=False)
 >>> x = chirp(r, rate=8000, speed=4.0)
 >>> x.dtype, bool(abs(x).max() <= 1.0)
@@ -51,7 +51,7 @@ NYQUIST_FADE = (0.8, 0.95)
 
 
 def _check_result(result):
-    from rollingdisk.friction.euler_disk import EulerDiskResult
+    from rollingdisk.scenarios.euler_disk import EulerDiskResult
 
     if not isinstance(result, EulerDiskResult):
         raise ParameterTypeError(f"result must be an EulerDiskResult (run_euler_disk), got "
@@ -106,7 +106,7 @@ def chirp(result, rate: int = RATE, speed: float = 1.0, max_seconds: float = MAX
     Parameters
     ----------
     result : EulerDiskResult
-        From :func:`rollingdisk.friction.euler_disk.run_euler_disk`.
+        From :func:`rollingdisk.scenarios.euler_disk.run_euler_disk`.
     rate : int
         Sample rate [Hz], in :data:`RATE_RANGE` (8000 to 192000).
     speed : float

@@ -2,8 +2,8 @@
 
 :func:`plot_spin_down_comparison` draws the tilt ``alpha`` and the whirr's frequency
 ``Omega / (2 pi)`` against the time left ``t0 - t`` (log-log, ``t0`` each run's fitted
-singular time) for runs of :func:`rollingdisk.friction.euler_disk.run_euler_disk` (e.g. the
-toys of :func:`rollingdisk.friction.euler_disk.dissipation_laws`), each law's fitted power
+singular time) for runs of :func:`rollingdisk.scenarios.euler_disk.run_euler_disk` (e.g. the
+toys of :func:`rollingdisk.scenarios.euler_disk.dissipation_laws`), each law's fitted power
 law over its fit window drawn thick, the fitted and predicted exponents in the legend.
 matplotlib is imported only when it draws.
 """
@@ -42,7 +42,7 @@ def plot_spin_down_comparison(results, labels=None, fig=None, *,
     Parameters
     ----------
     results : dict of str to EulerDiskResult, or sequence of EulerDiskResult
-        Runs of :func:`rollingdisk.friction.euler_disk.run_euler_disk` (a dict: its keys
+        Runs of :func:`rollingdisk.scenarios.euler_disk.run_euler_disk` (a dict: its keys
         are the labels).  A run whose fit window was not reached (``t0`` NaN) is listed in
         the legend as such and not drawn.
     labels : sequence of str, optional
@@ -58,8 +58,8 @@ def plot_spin_down_comparison(results, labels=None, fig=None, *,
         ``"<label>/Omega"`` (the curves) and ``"<label>/alpha_fit"``, ``"<label>/Omega_fit"``
         (the fitted power laws over the fit window, slopes ``result.exponents``).
     """
-    from rollingdisk.friction.euler_disk import EulerDiskResult
     from rollingdisk.plotting.plots import _pyplot
+    from rollingdisk.scenarios.euler_disk import EulerDiskResult
 
     if isinstance(results, dict):
         labels, runs = list(results), list(results.values())

@@ -9,22 +9,15 @@ Modules: :mod:`~rollingdisk.sweep.grid` (grids, perturbations, set-up),
 (:func:`basin_sweep`).
 """
 
-from rollingdisk.sweep.basin import basin_sweep as basin_sweep
-from rollingdisk.sweep.grid import BOUND_FACTOR as BOUND_FACTOR
-from rollingdisk.sweep.grid import GROW_HI as GROW_HI
-from rollingdisk.sweep.grid import GROW_LO as GROW_LO
-from rollingdisk.sweep.grid import Perturbation as Perturbation
-from rollingdisk.sweep.grid import SweepGrid as SweepGrid
-from rollingdisk.sweep.runner import run_sweep as run_sweep
-from rollingdisk.sweep.store import open_sweep as open_sweep
+from rollingdisk.util.lazy import attach as _attach
 
-__all__ = [
-    "SweepGrid",
-    "Perturbation",
-    "run_sweep",
-    "basin_sweep",
-    "open_sweep",
-    "BOUND_FACTOR",
-    "GROW_LO",
-    "GROW_HI",
-]
+__getattr__, __dir__, __all__ = _attach(__name__, {
+    "SweepGrid": "rollingdisk.sweep.grid",
+    "Perturbation": "rollingdisk.sweep.grid",
+    "run_sweep": "rollingdisk.sweep.runner",
+    "basin_sweep": "rollingdisk.sweep.basin",
+    "open_sweep": "rollingdisk.sweep.store",
+    "BOUND_FACTOR": "rollingdisk.sweep.grid",
+    "GROW_LO": "rollingdisk.sweep.grid",
+    "GROW_HI": "rollingdisk.sweep.grid",
+})

@@ -146,7 +146,7 @@ class _Bisection:
 def _basin_round(grid, kicks, opts):
     """One batch: the steady state of every grid point with its own kick; ``(bounded,
     stable, varpi2)`` flat and the number of trajectories integrated."""
-    from rollingdisk.integrate import batch as core
+    from rollingdisk.sweep import batch as core
 
     spec = _Spec(grid, Perturbation(kick=1.0), opts.t_end, opts.rtol, opts.atol,
                  opts.max_steps, opts.chunk, int(np.prod(grid.shape)), opts.method)

@@ -36,7 +36,7 @@ NO_STEADY_MOTION = outcome("no-steady-motion").code
 def _kernel_args(spec: _Spec, setup, a0=None):
     """``(ok, args)`` from ``setup = _setup(spec, i0, i1)``: which points have a steady
     motion, and for those the arguments of the batch kernels
-    (:mod:`rollingdisk.integrate.batch`, before the order): ``(rough, h, k1, k2, x0,
+    (:mod:`rollingdisk.sweep.batch`, before the order): ``(rough, h, k1, k2, x0,
     theta_ref, a0, GROW_LO, GROW_HI, t_end, rtol, atol, max_steps)``, k1 and k2 by eq. (10),
     a0 (``setup``'s unless given) = 1 where it is not finite."""
     x0, h, theta_ref, _, _, a0_ = setup
@@ -60,12 +60,12 @@ def kernel_args(spec: _Spec, i0: int = 0, i1: int | None = None):
 def _kernel(method, args):
     """Summaries (n, NCOL) of the trajectories of :func:`_kernel_args` by ``method``: the
     batch Taylor kernel (order from min(rtol, atol),
-    :func:`rollingdisk.integrate.taylor.taylor_order`; in vector lanes up to
-    :data:`rollingdisk.integrate.lanes.MAX_ORDER`, tolerance 1e-17) or the batch DOP853
-    kernel of :mod:`rollingdisk.integrate.batch`."""
-    from rollingdisk.integrate import batch as core
-    from rollingdisk.integrate.lanes import MAX_ORDER
-    from rollingdisk.integrate.taylor import taylor_order
+    :func:`rollingdisk.engine.taylor.taylor_order`; in vector lanes up to
+    :data:`rollingdisk.engine.lanes.MAX_ORDER`, tolerance 1e-17) or the batch DOP853
+    kernel of :mod:`rollingdisk.sweep.batch`."""
+    from rollingdisk.engine.lanes import MAX_ORDER
+    from rollingdisk.engine.taylor import taylor_order
+    from rollingdisk.sweep import batch as core
 
     if method == "taylor":
         rtol, atol = args[10], args[11]
@@ -78,7 +78,7 @@ def _kernel(method, args):
 
 def _compute_chunk(spec: _Spec, k: int, n_threads: int | None = None) -> dict:
     """Summaries of chunk k (a dict of 1-d arrays); deterministic."""
-    from rollingdisk.integrate import batch as core
+    from rollingdisk.sweep import batch as core
 
     if n_threads is not None:
         core.set_threads(n_threads)
@@ -133,7 +133,7 @@ def open_executor(kind: str, workers: int | None = None,
 
 def _thread_runner(n_threads: int | None) -> Runner:
     def run(spec, todo, finished):
-        from rollingdisk.integrate import batch as core
+        from rollingdisk.sweep import batch as core
 
         with core.threads() as all_threads:
             for k in todo:

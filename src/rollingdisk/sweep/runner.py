@@ -95,7 +95,7 @@ def run_sweep(grid: SweepGrid, t_end: float, *, perturbation: Perturbation | Non
         Step budget per trajectory, in [1, 1e12]; a trajectory that exhausts it has status
         "failed".
     method : {"taylor", "dop853"}
-        ``taylor`` (default): the batch Taylor kernel (:mod:`rollingdisk.integrate.taylor`;
+        ``taylor`` (default): the batch Taylor kernel (:mod:`rollingdisk.engine.taylor`;
         guards, crossings and thresholds located on the step polynomials, 2.0-2.1 times the
         trajectories per second of ``dop853``, docs/sweeps.md); ``dop853``: the batch
         DOP853 kernel (guards checked at step ends).

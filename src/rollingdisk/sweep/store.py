@@ -248,7 +248,7 @@ FLAGS = {
 
 
 def _status_flags():
-    from rollingdisk.integrate.batch import STATUS_NAMES
+    from rollingdisk.sweep.batch import STATUS_NAMES
 
     codes = (_NO_MOTION.code, *sorted(STATUS_NAMES))
     return codes, tuple(outcome(c).name for c in codes)

@@ -17,14 +17,15 @@ Outside the numeric core: nothing in the core imports this package.
 - :mod:`.report`: :func:`check_equations` and :func:`format_table`, what ``rollingdisk derive``
   prints.
 
-This module only re-exports.
 """
 
-from __future__ import annotations
+from rollingdisk.util.lazy import attach as _attach
 
-from .derivation import Derivation, derive, lambdified
-from .report import check_equations, format_table
-from .rows import EquationCheck
-
-__all__ = ["Derivation", "EquationCheck", "check_equations", "derive", "format_table",
-           "lambdified"]
+__getattr__, __dir__, __all__ = _attach(__name__, {
+    "Derivation": "rollingdisk.symbolic.derivation",
+    "EquationCheck": "rollingdisk.symbolic.rows",
+    "check_equations": "rollingdisk.symbolic.report",
+    "derive": "rollingdisk.symbolic.derivation",
+    "format_table": "rollingdisk.symbolic.report",
+    "lambdified": "rollingdisk.symbolic.derivation",
+})

@@ -2,7 +2,7 @@
 
 Starts from :func:`rollingdisk.symbolic.derivation.derive` (balances with a general contact
 force ``F = (F_x, F_y, F_z)`` and moment ``M = (M_x, M_y, M_z)`` in Cxyz) and closes them
-with the contact laws of :mod:`rollingdisk.friction.ground`; nothing is taken from the paper:
+with the contact laws of :mod:`rollingdisk.model.ground`; nothing is taken from the paper:
 
 * the moment is affine in the normal force, ``M = M0 + F_z M1`` (symbols ``M0x..M1z``);
 * rolling: the no-slip constraint ``v_Px = v_Py = 0`` (eq. 6) gives ``v_Cx, v_Cy``; its time

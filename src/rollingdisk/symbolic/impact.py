@@ -1,6 +1,6 @@
 """Free flight, the lowest point, the Delassus matrix and the impact law, derived (sympy).
 
-Nothing is taken from :mod:`rollingdisk.friction.impact`; the numeric functions there are
+Nothing is taken from :mod:`rollingdisk.phases.impact`; the numeric functions there are
 compared with these results by ``tests/test_impact.py``.  Frames and angles as in
 ``docs/notation.md``: ``R = R_Z(psi) R_x(theta) R_eta(phi)``, C xi eta zeta = ``R_Z(psi)
 R_x(theta)``, eta the symmetry axis; ``m = a = g = 1``.

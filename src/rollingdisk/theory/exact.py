@@ -42,7 +42,7 @@ What ends a motion
 ``"bounded"`` (both ends are turning points and ``F_z > 0`` over ``[a, b]``), or the first
 along the motion of: ``"lift-off"`` (``F_z`` of eq. 11, a function of ``theta`` on the
 orbit, reaches 0), ``"edge-contact"`` (h > 0, ``theta`` reaches 0), ``"fell-flat"``
-(``|theta|`` reaches pi/2) -- the guards of :mod:`rollingdisk.integrate.events`, with the time and
+(``|theta|`` reaches pi/2) -- the guards of :mod:`rollingdisk.model.events`, with the time and
 ``theta`` where it happens.  A state exactly on a steady motion is ``"steady"``.  A
 quadrature that spends its work budget (``time_limit``, ``max_evals``, ``max_terms``)
 first is ``"not-converged"``, with a ``message``.

@@ -1,25 +1,12 @@
-"""Below the model: the library's errors, validators of the public boundary, atomic files."""
+"""Below the model: the library's errors, validators of the public boundary, atomic files,
+signals, progress and lazy re-exports."""
 
-from rollingdisk.util.checks import (
-    check_int as check_int,
-)
-from rollingdisk.util.checks import (
-    check_real as check_real,
-)
-from rollingdisk.util.errors import (
-    INPUT_ERRORS as INPUT_ERRORS,
-)
-from rollingdisk.util.errors import (
-    ParameterError as ParameterError,
-)
-from rollingdisk.util.errors import (
-    ParameterTypeError as ParameterTypeError,
-)
+from rollingdisk.util.lazy import attach as _attach
 
-__all__ = [
-    "ParameterError",
-    "ParameterTypeError",
-    "INPUT_ERRORS",
-    "check_real",
-    "check_int",
-]
+__getattr__, __dir__, __all__ = _attach(__name__, {
+    "ParameterError": "rollingdisk.util.errors",
+    "ParameterTypeError": "rollingdisk.util.errors",
+    "INPUT_ERRORS": "rollingdisk.util.errors",
+    "check_real": "rollingdisk.util.checks",
+    "check_int": "rollingdisk.util.checks",
+})

@@ -1,0 +1,19 @@
+"""The disk's initial-value problems on each ground: :func:`simulate` on rough and smooth
+ground (the paper's equations, stopped at the guards) and :func:`simulate_coulomb` on
+Coulomb ground (rolling and sliding, transitions located), with their drivers.
+"""
+
+from rollingdisk.util.lazy import attach as _attach
+
+__getattr__, __dir__, __all__ = _attach(__name__, {
+    "DEFAULT_RTOL": "rollingdisk.ivp.simulation",
+    "DEFAULT_ATOL": "rollingdisk.ivp.simulation",
+    "DEFAULT_MAX_STEPS": "rollingdisk.ivp.simulation",
+    "MAX_T": "rollingdisk.ivp.simulation",
+    "simulate": "rollingdisk.ivp.simulation",
+    "simulate_steady": "rollingdisk.ivp.simulation",
+    "simulate_coulomb": "rollingdisk.ivp.hybrid",
+    "energy_balance": "rollingdisk.ivp.hybrid",
+    "DISSIPATION_TERMS": "rollingdisk.ivp.hybrid",
+    "slip_direction": "rollingdisk.ivp.hybrid",
+})

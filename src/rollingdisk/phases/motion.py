@@ -1,0 +1,925 @@
+"""The whole motion to rest: contact, flight, impacts, rim changes and the flat disk.
+
+Wires the pieces that each stop at a guard into one run (``docs/motion.md``):
+
+* contact on a rim edge, rolling or sliding on Coulomb ground:
+  :func:`rollingdisk.ivp.hybrid.simulate_coulomb`, until lift-off, edge contact or
+  falling flat;
+* free flight in closed form and the located touchdown
+  (:func:`~rollingdisk.phases.impact.free_flight`,
+  :func:`~rollingdisk.phases.impact.touchdown_time`);
+* the Newton-Coulomb impact law at the touching rim point
+  (:func:`~rollingdisk.phases.impact.impact`), also when an upright disk changes rim
+  edge (``theta`` through 0, ``h > 0``);
+* a face impact when the disk falls flat, then the flat disk sliding and spinning on its
+  face with Coulomb friction under uniform pressure until it stops.
+
+Units m = a = g = 1.  Energy: ``E + dissipated + impact losses = const`` along the run.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rollingdisk.ivp.hybrid import simulate_coulomb, slip_direction
+from rollingdisk.model import coulomb as _cl
+from rollingdisk.model.coulomb import MODE_NAMES, coulomb_contact, coulomb_energy
+from rollingdisk.model.disk import Disk
+from rollingdisk.model.ground import Coulomb
+from rollingdisk.model.outcomes import outcome
+from rollingdisk.phases.impact import (
+    _cross,
+    _lowest_height,
+    _r_xyz,
+    _rot_x,
+    _rot_z,
+    free_flight,
+    impact,
+    lowest_point,
+    touchdown_time,
+)
+from rollingdisk.util.checks import check_int, check_real, check_span
+from rollingdisk.util.errors import ParameterError, ParameterTypeError
+
+__all__ = ["simulate_to_rest", "MotionResult", "FlightSegment", "FlatSegment",
+           "ModeChange", "ImpactRecord", "flat_friction", "PHASES", "GUARDS"]
+
+#: Phases of a motion, as named in :attr:`MotionResult.transitions`.
+PHASES = ("rolling", "sliding", "flight", "flat", "rest")
+#: The guards of the contact phase that ``stop_at`` may name.
+GUARDS = ("lift-off", "edge-contact", "fell-flat")
+
+K2 = 0.5  # k2^2: moment of inertia about the axis (eq. 10, m = a = 1)
+
+
+# ------------------------------------------------------------------------- records
+@dataclass(frozen=True)
+class ModeChange:
+    """A change of phase at time ``t``: ``from_phase -> to_phase`` (names :data:`PHASES`)."""
+
+    t: float
+    from_phase: str
+    to_phase: str
+
+    def as_dict(self) -> dict:
+        return {"t": self.t, "from": self.from_phase, "to": self.to_phase}
+
+
+@dataclass(frozen=True)
+class ImpactRecord:
+    """One impact at time ``t``.
+
+    Attributes
+    ----------
+    t : float
+        Time [``sqrt(a/g)``].
+    kind : {"rim", "rim-change", "face", "tread"}
+        A rim point landing from flight, the other rim edge of an upright disk, the face
+        of a disk falling flat, the tread line of a disk whose rim changes accumulated
+        (the rule of :meth:`_Motion._roll_on_tread`).
+    impulse : ndarray, shape (3,)
+        ``(Lam_x, Lam_y, Lam_N)`` in Cxyz [``m sqrt(a g)``]; for a face impact the vertical
+        momentum removed.
+    energy_lost : float
+        ``>= 0`` [``m g a``].
+    restitution : float
+        The ``e`` used (0 where the Zeno rule captured the bounce).
+    """
+
+    t: float
+    kind: str
+    impulse: np.ndarray
+    energy_lost: float
+    restitution: float
+
+    def as_dict(self) -> dict:
+        """``{"t", "kind", "impulse", "energy_lost", "restitution"}`` (JSON-ready)."""
+        return {"t": float(self.t), "kind": self.kind,
+                "impulse": [float(x) for x in self.impulse],
+                "energy_lost": float(self.energy_lost), "restitution": float(self.restitution)}
+
+    def __repr__(self) -> str:
+        return (f"ImpactRecord(t={self.t:.6g}, kind={self.kind!r}, "
+                f"Lam_N={self.impulse[2]:.4g}, energy_lost={self.energy_lost:.4g})")
+
+
+@dataclass(frozen=True, eq=False)
+class FlightSegment:
+    """Free flight from ``t0`` to ``t1``: closed form (:func:`free_flight`).
+
+    Attributes
+    ----------
+    disk : Disk
+    t0, t1 : float
+    state0, state1 : ndarray, shape (12,)
+        Free-body states (:data:`~rollingdisk.phases.impact.FREE_STATE`) at both ends.
+    """
+
+    disk: Disk
+    t0: float
+    t1: float
+    state0: np.ndarray
+    state1: np.ndarray
+
+    def state(self, t):
+        """Free-body state(s) at time(s) ``t`` in ``[t0, t1]``."""
+        return free_flight(self.disk, self.state0, np.asarray(t, dtype=float) - self.t0)
+
+    def __repr__(self) -> str:
+        return f"FlightSegment(t=[{self.t0:.6g}, {self.t1:.6g}])"
+
+
+@dataclass(frozen=True, eq=False)
+class FlatSegment:
+    """The disk lying on a face, sliding and spinning with Coulomb friction.
+
+    Attributes
+    ----------
+    t : ndarray
+        Times [``sqrt(a/g)``].
+    speed, spin : ndarray
+        ``|V|`` of the centre [``sqrt(a g)``] and ``|Omega|`` about the vertical
+        [``sqrt(g/a)``]; both reach 0 at the same time (uniform pressure).
+    dissipated : ndarray
+        Energy dissipated by friction since the start of the segment [``m g a``].
+    state0, state1 : ndarray, shape (12,)
+        Free-body states at both ends (``theta = +-pi/2``, ``Z_C = h``).
+    face : int
+        ``+1``: the axis eta points up (heads), ``-1`` down (tails).
+    """
+
+    t: np.ndarray
+    speed: np.ndarray
+    spin: np.ndarray
+    dissipated: np.ndarray
+    state0: np.ndarray
+    state1: np.ndarray
+    face: int
+
+    def __repr__(self) -> str:
+        return (f"FlatSegment(t=[{self.t[0]:.6g}, {self.t[-1]:.6g}], face={self.face:+d}, "
+                f"dissipated={self.dissipated[-1]:.4g})")
+
+
+@dataclass(frozen=True, eq=False)
+class MotionResult:
+    """A motion run through every phase (:func:`simulate_to_rest`).
+
+    Attributes
+    ----------
+    disk : Disk
+    ground : Coulomb
+    segments : tuple
+        In time order: :class:`~rollingdisk.Trajectory` (contact on a rim edge),
+        :class:`FlightSegment`, :class:`FlatSegment`.
+    transitions : tuple of ModeChange
+        Every change of phase (rolling, sliding, flight, flat, rest), rolling/sliding
+        changes inside contact segments included.
+    impacts : tuple of ImpactRecord
+    status : str
+        An outcome name (:mod:`rollingdisk.model.outcomes`): ``"at-rest"``,
+        ``"completed"`` (the end time, or the ``decide`` rule of :func:`toss`), a guard of
+        ``stop_at``, ``"step-budget"`` (``max_segments`` spent), ``"time-budget"``
+        (``max_wall`` spent) or
+        ``"failed"``.
+    message : str
+    t_end : float
+    final_state : ndarray, shape (12,)
+        Free-body state at ``t_end``.
+    energy_balance : float
+        Largest ``|E + dissipated + impact losses - E(0)|`` along the run, relative to
+        ``max(|E(0)|, 1)``.
+    energy_initial : float
+    dissipated : float
+        Energy dissipated by friction and the contact moments [``m g a``].
+    impact_loss : float
+        Energy lost in impacts (and the Zeno captures) [``m g a``].
+    """
+
+    disk: Disk
+    ground: Coulomb
+    segments: tuple
+    transitions: tuple
+    impacts: tuple
+    status: str
+    message: str
+    t_end: float
+    final_state: np.ndarray
+    energy_balance: float
+    energy_initial: float
+    dissipated: float
+    impact_loss: float
+    wall_time: float = field(default=math.nan)
+
+    @property
+    def energy_final(self) -> float:
+        """Total energy at ``t_end`` [``m g a``]."""
+        return _state_energy(self.disk.h, self.final_state)
+
+    def __repr__(self) -> str:
+        return (f"MotionResult(h={self.disk.h:g}, status={self.status!r}, "
+                f"t_end={self.t_end:.6g}, segments={len(self.segments)}, "
+                f"impacts={len(self.impacts)}, energy_balance={self.energy_balance:.2g})")
+
+
+# ------------------------------------------------------------------- state helpers
+def _state_energy(h, s):
+    k1 = 0.25 + h * h / 3.0
+    w1, w2, w3 = s[9:12]
+    return float(0.5 * s[6:9] @ s[6:9] + 0.5 * (k1 * (w1 * w1 + w3 * w3) + K2 * w2 * w2)
+                 + s[2])
+
+
+def _kinetic(h, s):
+    return _state_energy(h, s) - float(s[2])
+
+
+def _free_from_contact(h, y, side):
+    """Free state of a Coulomb state ``y`` touching with rim edge ``side`` (eq. 7 with
+    ``h~ = side h``, whatever the sign of a ``theta`` near 0)."""
+    X, Y, VX, VY, psi, theta, phi, w1, w2, w3 = y
+    r = _r_xyz(h, theta, side, 1.0)
+    return np.array([X, Y, -r[2], psi, theta, phi, VX, VY, -w1 * r[1], w1, w2, w3])
+
+
+def _contact_from_free(s, side):
+    """Coulomb state of a free state touching with rim edge ``side``; a ``theta`` of the
+    wrong sign (rounding, at a rim change) becomes ``side * 1e-13``."""
+    theta = s[4]
+    if theta * side <= 0.0:
+        theta = side * 1e-13
+    return np.array([s[0], s[1], s[6], s[7], s[3], theta, s[5], s[9], s[10], s[11]])
+
+
+def _edge_velocity(h, s, side):
+    """Velocity of the lowest point of rim edge ``side`` in Cxyz, and its height."""
+    psi, theta = s[3], s[4]
+    r = _r_xyz(h, theta, side, 1.0 if math.cos(theta) >= 0.0 else -1.0)
+    V = _rot_z(psi).T @ s[6:9]
+    w = _rot_x(theta) @ s[9:12]
+    return V + _cross(w, r), s[2] + r[2]
+
+
+def _normalise_launch(s):
+    """Angles on the branch ``cos theta >= 0``: ``(psi, theta, phi) ~ (psi + pi, pi - theta,
+    phi + pi)`` with ``omega -> (-omega1, omega2, -omega3)`` (the frame turns by pi about
+    eta)."""
+    s = s.copy()
+    if math.cos(s[4]) < 0.0:
+        s[3] += math.pi
+        s[4] = math.remainder(math.pi - s[4], 2.0 * math.pi)
+        s[5] += math.pi
+        s[9], s[11] = -s[9], -s[11]
+    return s
+
+
+# -------------------------------------------------------------------- flat disk
+_NR, _NPHI = 40, 96
+_xr, _wr = np.polynomial.legendre.leggauss(_NR)
+_RHO = 0.5 * (_xr + 1.0)
+_WRHO = 0.5 * _wr * _RHO  # rho d rho
+_PHI = (np.arange(_NPHI) + 0.5) * (2.0 * math.pi / _NPHI)
+_RR, _PP = np.meshgrid(_RHO, _PHI, indexing="ij")
+_WW = np.outer(_WRHO, np.full(_NPHI, 2.0 * math.pi / _NPHI)) / math.pi  # pressure 1/pi
+
+
+def flat_friction(speed: float, spin: float) -> tuple[float, float]:
+    """Friction on a flat disk sliding and spinning on its face, per unit ``mu m g``.
+
+    Parameters
+    ----------
+    speed : float
+        ``|V| >= 0`` of the centre [``sqrt(a g)``].
+    spin : float
+        ``Omega >= 0`` about the vertical [``sqrt(g/a)``].
+
+    Returns
+    -------
+    (f, tau) : (float, float)
+        The force opposes ``V`` with magnitude ``mu m g f`` and the torque opposes the
+        spin with magnitude ``mu m g a tau``.
+
+    Notes
+    -----
+    Uniform pressure ``p = m g/(pi a^2)`` and Coulomb friction at each point against its
+    slip ``w = V + Omega z x r``: ``F = -mu int p w/|w| dA``, ``T = -mu int p r x w/|w| dA``.
+    By the mirror symmetry ``x -> -x`` (``V`` along ``x``) the force has no component
+    across ``V``.  Limits: ``f = 1, tau = 0`` for pure sliding and ``f = 0, tau = 2/3`` for
+    pure spin (the classic results); the coupled case by quadrature (Gauss-Legendre in
+    ``rho``, midpoint in the angle), as in Farkas et al., PRL 90, 248302 (2003).
+
+    Examples
+    --------
+    >>> flat_friction(1.0, 0.0), [round(x, 6) for x in flat_friction(0.0, 1.0)]
+    ((1.0, 0.0), [0.0, 0.666667])
+    """
+    v = check_real("speed", speed, low=0.0)
+    om = check_real("spin", spin, low=0.0)
+    if om == 0.0:
+        return (1.0 if v > 0.0 else 0.0), 0.0
+    if v == 0.0:
+        return 0.0, 2.0 / 3.0
+    wx = v - om * _RR * np.sin(_PP)
+    wy = om * _RR * np.cos(_PP)
+    n = np.hypot(wx, wy)
+    n[n == 0.0] = 1.0
+    f = float(np.sum(_WW * wx / n))
+    tau = float(np.sum(_WW * (om * _RR * _RR - v * _RR * np.sin(_PP)) / n))
+    return f, tau
+
+
+def _flat_run(mu, speed, spin, t0, t1):
+    """Integrate ``dV/dt = -mu f``, ``k2 dOmega/dt = -mu tau`` from ``(speed, spin)`` until
+    both vanish or ``t1``; returns ``t, V, Omega, D, distance, angle``."""
+    from scipy.integrate import solve_ivp
+
+    if mu == 0.0 or (speed == 0.0 and spin == 0.0):
+        T = t1 - t0 if mu == 0.0 else 0.0
+        t = np.array([t0, t0 + T])
+        return (t, np.array([speed, speed]), np.array([spin, spin]), np.zeros(2),
+                speed * T, spin * T)
+
+    def rhs(t, z):
+        v, om = max(z[0], 0.0), max(z[1], 0.0)
+        f, tau = flat_friction(v, om)
+        return [-mu * f, -mu * tau / K2, mu * (f * v + tau * om), v, om]
+
+    def stop_v(t, z):
+        return z[0]
+
+    def stop_w(t, z):
+        return z[1]
+
+    stop_v.terminal = stop_w.terminal = True
+    stop_v.direction = stop_w.direction = -1
+    events = [e for e, x in ((stop_v, speed), (stop_w, spin)) if x > 0.0]
+    z0 = [speed, spin, 0.0, 0.0, 0.0]
+    if speed == 0.0 or spin == 0.0:  # the classic closed forms: f = 1 or tau = 2/3
+        rate = mu if spin == 0.0 else mu * (2.0 / 3.0) / K2
+        x0 = speed if spin == 0.0 else spin
+        T = min(x0 / rate, t1 - t0)
+        ts = np.linspace(0.0, T, 9)
+        x = x0 - rate * ts
+        scale = 1.0 if spin == 0.0 else K2
+        D = 0.5 * scale * (x0 * x0 - x * x)
+        dist = x0 * T - 0.5 * rate * T * T
+        zero = np.zeros_like(ts)
+        return (t0 + ts, x if spin == 0.0 else zero, zero if spin == 0.0 else x, D,
+                dist if spin == 0.0 else 0.0, 0.0 if spin == 0.0 else dist)
+    sol = solve_ivp(rhs, (t0, t1), z0, method="DOP853", rtol=1e-10, atol=1e-13,
+                    events=events)
+    t, Z = sol.t, sol.y
+    V, W, D = np.maximum(Z[0], 0.0), np.maximum(Z[1], 0.0), Z[2].copy()
+    if sol.status != 1:
+        return t, V, W, D, Z[3, -1], Z[4, -1]
+    # one of them vanished (to rounding); on that invariant line the other ends by its
+    # closed form (f = 1 or tau = 2/3); the rounding remainder counts as dissipated
+    v_hit = events[0] is stop_v and sol.t_events[0].size > 0
+    if v_hit:
+        D[-1] += 0.5 * Z[0, -1] ** 2
+        V[-1] = 0.0
+        x0, rate, scale = W[-1], mu * (2.0 / 3.0) / K2, K2
+    else:
+        D[-1] += 0.5 * K2 * Z[1, -1] ** 2
+        W[-1] = 0.0
+        x0, rate, scale = V[-1], mu, 1.0
+    T = min(x0 / rate, t1 - t[-1])
+    x = max(x0 - rate * T, 0.0) if T < t1 - t[-1] else x0 - rate * T
+    more = x0 * T - 0.5 * rate * T * T
+    t = np.append(t, t[-1] + T)
+    V = np.append(V, 0.0 if v_hit else x)
+    W = np.append(W, x if v_hit else 0.0)
+    D = np.append(D, D[-1] + 0.5 * scale * (x0 * x0 - x * x))
+    if T >= x0 / rate:
+        V[-1] = W[-1] = 0.0
+    return (t, V, W, D, Z[3, -1] + (0.0 if v_hit else more),
+            Z[4, -1] + (more if v_hit else 0.0))
+
+
+def _face_impact(h, s):
+    """Plastic, frictionless impact of the face: ``V_Z`` and the tilting rates vanish, the
+    horizontal velocity and the angular momentum about the vertical through C are kept;
+    the disk is laid exactly flat (``theta = +-pi/2``, ``Z_C = h``).  Returns the flat
+    state, the vertical spin, the face (+1 eta up) and the energy lost."""
+    theta = s[4]
+    face = 1 if math.sin(theta) >= 0.0 else -1
+    k1 = 0.25 + h * h / 3.0
+    w1, w2, w3 = s[9:12]
+    L_Z = k1 * w3 * math.cos(theta) + K2 * w2 * math.sin(theta)  # eta_Z = sin, zeta_Z = cos
+    spin = L_Z / K2  # about +Z
+    flat = s.copy()
+    flat[2] = h
+    flat[4] = face * 0.5 * math.pi
+    flat[8] = 0.0
+    flat[9], flat[10], flat[11] = 0.0, spin * face, 0.0  # omega2 along eta = face Z
+    lost = _state_energy(h, s) - _state_energy(h, flat)
+    return flat, spin, face, lost, -s[8]
+
+
+def _touchdown(disk, s):
+    """:func:`touchdown_time`; where its conservative advancement stalls on a grazing
+    flight (the lowest point skimming the plane), a scan of the closed-form height on a
+    grid of steps ``<= 0.1/(1 + |omega|)`` and ``brentq`` on the first sign change."""
+    try:
+        return touchdown_time(disk, s, inside_tol=1e-9)
+    except RuntimeError:
+        pass
+    from scipy.optimize import brentq
+
+    h = disk.h
+
+    def H(t):
+        x = free_flight(disk, s, t)
+        return _lowest_height(h, x[2], x[4])
+
+    V, Z = s[8], s[2]
+    T = V + math.sqrt(V * V + 2.0 * max(Z - min(1.0, h), 0.0)) + 1e-9
+    dt = 0.1 / (1.0 + float(np.linalg.norm(s[9:12])))
+    ts = np.arange(0.0, T + dt, dt)
+    Hs = [H(x) for x in ts]
+    for i in range(1, ts.size):
+        if Hs[i] <= 0.0:
+            return brentq(H, ts[i - 1], ts[i], xtol=1e-15, rtol=8.9e-16)
+    return float(ts[-1])
+
+
+# --------------------------------------------------------------------- the loop
+def _check_inputs(disk, ground, t_span, y0, e, mu_impact, stop_at):
+    if not isinstance(disk, Disk):
+        raise ParameterTypeError(f"disk must be a rollingdisk.Disk, got {disk!r}")
+    if not isinstance(ground, Coulomb):
+        raise ParameterTypeError(f"ground must be a rollingdisk.Coulomb(...) value, got "
+                                 f"{ground!r}")
+    t0, t1 = check_span(t_span)
+    e = check_real("e", e, low=0.0, high=1.0)
+    mu = ground.mu_k if mu_impact is None else check_real("mu_impact", mu_impact, low=0.0)
+    if isinstance(stop_at, str):
+        stop_at = (stop_at,)
+    for g in stop_at:
+        if g not in GUARDS:
+            raise ParameterError(f"stop_at must name guards among {GUARDS}, got {g!r}")
+    try:
+        y = np.asarray(y0, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterTypeError(f"y0 must be an array of real numbers, got {y0!r}") from None
+    except OverflowError:  # an integer beyond floating-point range
+        raise ParameterError("y0 must be a finite state: a component is beyond "
+                             "floating-point range") from None
+    if y.shape not in ((10,), (12,)) or not np.all(np.isfinite(y)):
+        raise ParameterError("y0 must be a finite Coulomb state (10 components, touching) "
+                             "or a free-body state (12 components, in flight), got shape "
+                             f"{y.shape}")
+    return t0, t1, e, mu, tuple(stop_at), y
+
+
+def simulate_to_rest(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *,
+                     e: float = 0.5, mu_impact: float | None = None,
+                     stop_at: Sequence[str] = (), max_segments: int = 20_000,
+                     max_wall: float = 600.0, alpha_flat: float = 1e-3,
+                     v_capture: float = 1e-3, zeno_count: int = 20,
+                     zeno_window: float = 0.05, rest_energy: float = 1e-10,
+                     rtol: float = 1e-10, atol: float = 1e-12, chunk: float = math.inf,
+                     max_steps: int = 2_000_000, max_transitions: int = 10_000,
+                     decide: Callable | None = None,
+                     progress: Callable[[float], None] | None = None) -> MotionResult:
+    """Run the disk through contact, flight, impacts and the flat phase, to rest.
+
+    Parameters
+    ----------
+    disk : Disk
+    ground : Coulomb
+        Friction of the contact phases (``mu_s``, ``mu_k``, moments) and, with ``mu_k``,
+        of the flat disk.
+    t_span : (t0, t1)
+        Time span [``sqrt(a/g)``], ``t1 > t0``.
+    y0 : array_like, shape (10,) or (12,)
+        A Coulomb state touching the plane (:data:`~rollingdisk.model.coulomb.COULOMB_STATE`)
+        or a free-body state above it (:data:`~rollingdisk.phases.impact.FREE_STATE`).
+    e : float
+        Restitution of the impact law, ``[0, 1]`` (normal and tangential, Glocker).
+    mu_impact : float, optional
+        Friction of the impact law, ``>= 0``; default ``ground.mu_k``.
+    stop_at : sequence of {"lift-off", "edge-contact", "fell-flat"}
+        Guards that end the run as :func:`simulate_coulomb` would (the old statuses).
+    max_segments : int
+        Budget of segments (contact, flight, flat); beyond it: ``"step-budget"``.
+    max_wall : float
+        Budget of wall-clock seconds; beyond it: ``"time-budget"``.
+    alpha_flat : float
+        Tilt ``pi/2 - |theta|`` [rad] at which a disk on its rim counts as fallen flat
+        (then a face impact); ``(0, 0.5]``.
+    v_capture : float
+        Zeno rule: an impact whose contact point would leave at a normal speed below
+        ``v_capture`` [``sqrt(a g)``] is replaced by the plastic one (``e = 0``).
+    zeno_count, zeno_window : int, float
+        Zeno rule: after ``zeno_count`` impacts within ``zeno_window`` time units every
+        further impact is plastic until a contact phase lasts longer than the window.
+    rest_energy : float
+        Kinetic energy [``m g a``] below which a disk upright on its tread (at a rim
+        change, or at the end of a contact phase) is at rest.
+    rtol, atol : float
+        Tolerances of the contact phases.
+    max_steps : int
+        Step budget of one contact segment (:func:`simulate_coulomb`); beyond it the run
+        ends ``"failed"``.
+    max_transitions : int
+        Budget of mode events of one contact segment (:func:`simulate_coulomb`; stick-slip
+        chatter); beyond it the run ends ``"failed"``.
+    chunk : float
+        Longest contact segment [``sqrt(a/g)``] before ``decide`` is asked again.
+    decide : callable, optional
+        ``decide(E, free_state) -> str | None``, asked at every segment boundary; a
+        string ends the run with status ``"completed"`` and that text in the message
+        (:func:`toss` uses it for the energy trap).
+    progress : callable, optional
+        ``progress(fraction_of_time)``.
+
+    Returns
+    -------
+    MotionResult
+
+    Notes
+    -----
+    The rules (``docs/motion.md``): touchdown is located in closed form; the impact at a
+    rim point follows Glocker's law; a contact phase starts when the post-impact contact
+    point has no normal velocity (plastic, or captured by the Zeno rule) and the normal
+    force needed is positive, else the disk flies.  At an edge contact (``theta`` through
+    0, ``h > 0``) the other rim edge strikes: impact there, then each edge in turn while
+    one approaches (at most 50 rounds).  At ``|theta| = pi/2 - alpha_flat`` the face
+    strikes: plastic and frictionless (vertical velocity and tilting rates vanish, the
+    horizontal velocity and the vertical angular momentum stay); then the flat disk
+    slides and spins under uniform pressure (:func:`flat_friction`) until both stop.
+
+    Examples
+    --------
+    >>> import rollingdisk as rd
+    >>> s0 = [0, 0, 2.0, 0, 0.4, 0, 0, 0, 0, 0, 0, 0]  # tilted, dropped from rest
+    >>> res = simulate_to_rest(rd.Disk(0.1), rd.Coulomb(0.5), (0, 200), s0, e=0.3)
+    >>> res.status, res.energy_balance < 1e-9
+    ('at-rest', True)
+    """
+    t0, t1, e, mu, stop_at, y = _check_inputs(disk, ground, t_span, y0, e, mu_impact,
+                                              stop_at)
+    max_segments = check_int("max_segments", max_segments, low=1)
+    max_wall = check_real("max_wall", max_wall, low=0.0, low_open=True)
+    alpha_flat = check_real("alpha_flat", alpha_flat, low=0.0, high=0.5, low_open=True)
+    v_capture = check_real("v_capture", v_capture, low=0.0)
+    zeno_count = check_int("zeno_count", zeno_count, low=2)
+    zeno_window = check_real("zeno_window", zeno_window, low=0.0)
+    rest_energy = check_real("rest_energy", rest_energy, low=0.0)
+    chunk = check_real("chunk", chunk, low=0.0, low_open=True) if chunk != math.inf \
+        else math.inf
+    run = _Motion(disk, ground, t0, t1, e, mu, stop_at, max_segments, max_wall, alpha_flat,
+                  v_capture, zeno_count, zeno_window, rest_energy, rtol, atol, chunk,
+                  decide, progress)
+    run.max_steps = check_int("max_steps", max_steps, low=1)
+    run.max_transitions = check_int("max_transitions", max_transitions, low=1)
+    return run.go(y)
+
+
+class _Motion:
+    """One run: the phase loop and its bookkeeping."""
+
+    def __init__(self, disk, ground, t0, t1, e, mu, stop_at, max_segments, max_wall,
+                 alpha_flat, v_capture, zeno_count, zeno_window, rest_energy, rtol, atol,
+                 chunk, decide, progress):
+        self.disk, self.h, self.ground = disk, disk.h, ground
+        self.t0, self.t1, self.e, self.mu = t0, t1, e, mu
+        self.stop_at, self.max_segments, self.max_wall = stop_at, max_segments, max_wall
+        self.alpha_flat, self.v_capture = alpha_flat, v_capture
+        self.zeno_count, self.zeno_window = zeno_count, zeno_window
+        self.rest_energy, self.rtol, self.atol = rest_energy, rtol, atol
+        self.chunk, self.decide, self.progress = chunk, decide, progress
+        self.segments, self.transitions, self.impacts = [], [], []
+        self.D = 0.0  # dissipated by friction and moments
+        self.L = 0.0  # impact losses
+        self.dev = 0.0
+        self.phase = None
+        self.impact_times: list[float] = []
+
+    # -- bookkeeping -------------------------------------------------------------------
+    def _check(self, E):
+        self.dev = max(self.dev, float(np.max(np.abs(np.asarray(E) + self.D + self.L
+                                                     - self.E0))))
+
+    def _enter(self, t, phase):
+        if phase != self.phase and self.phase is not None:
+            self.transitions.append(ModeChange(float(t), self.phase, phase))
+        self.phase = phase
+
+    def _impact_record(self, t, kind, impulse, lost, e):
+        self.impacts.append(ImpactRecord(float(t), kind, np.asarray(impulse, float),
+                                         float(lost), float(e)))
+        self.L += lost
+        self.impact_times.append(float(t))
+
+    def _zeno(self, t):
+        n = self.zeno_count
+        return len(self.impact_times) >= n and t - self.impact_times[-n] <= self.zeno_window
+
+    def _result(self, status, message, t, s):
+        scale = max(abs(self.E0), 1.0)
+        if self.phase is not None and status == "at-rest":
+            self._enter(t, "rest")
+        self._check(_state_energy(self.h, s))
+        return MotionResult(self.disk, self.ground, tuple(self.segments),
+                            tuple(self.transitions), tuple(self.impacts), outcome(status).name,
+                            message, float(t), np.asarray(s, float), self.dev / scale,
+                            self.E0, self.D, self.L, time.perf_counter() - self.wall0)
+
+    # -- the loop ----------------------------------------------------------------------
+    def go(self, y):
+        h = self.h
+        self.wall0 = time.perf_counter()
+        t = self.t0
+        if y.shape == (12,):
+            s = _normalise_launch(y)
+            H = _lowest_height(h, s[2], s[4])
+            if H < -1e-12:
+                raise ParameterError(f"y0: the disk is inside the plane (lowest point at "
+                                     f"Z = {H:.3g} < 0); a launch state needs Z_C >= "
+                                     f"|cos theta| + h |sin theta|")
+            self.E0 = _state_energy(h, s)
+            nxt = ("flight", s, None)
+        else:
+            if not abs(y[5]) < 0.5 * math.pi:
+                raise ParameterError(f"y0: theta must lie in (-pi/2, pi/2) on a rim edge, "
+                                     f"got {y[5]!r}")
+            side = 1 if y[5] >= 0.0 else -1
+            s = _free_from_contact(h, y, side)
+            self.E0 = float(coulomb_energy(self.disk, y))
+            nxt = ("contact", s, side)
+        n_seg = 0
+        while True:
+            kind, s, side = nxt
+            if t >= self.t1:
+                return self._result("completed", f"reached t = {t:.12g}", t, s)
+            if n_seg >= self.max_segments:
+                return self._result("step-budget", f"segment budget exhausted: "
+                                    f"{self.max_segments} segments by t = {t:.12g}", t, s)
+            if time.perf_counter() - self.wall0 > self.max_wall:
+                return self._result("time-budget", f"wall-time budget exhausted: "
+                                    f"{self.max_wall:g} s by t = {t:.12g}", t, s)
+            if self.decide is not None:
+                why = self.decide(_state_energy(h, s), s)
+                if why:
+                    return self._result("completed", f"decided at t = {t:.12g}: {why}", t, s)
+            if self.progress is not None:
+                self.progress(min(1.0, (t - self.t0) / (self.t1 - self.t0)))
+            n_seg += 1
+            if kind == "flight":
+                out = self._flight(t, s)
+            elif kind == "contact":
+                out = self._contact(t, s, side)
+            elif kind == "face":
+                out = self._flat(t, s)
+            else:  # pragma: no cover
+                raise AssertionError(kind)
+            if out[0] == "end":
+                _, status, message, t, s = out
+                return self._result(status, message, t, s)
+            t, nxt = out[1], out[2:]
+
+    # -- phases ------------------------------------------------------------------------
+    def _after_impact(self, t, s, side):
+        """Where a disk touching with rim edge ``side`` and no approaching edge goes."""
+        h = self.h
+        if 0.5 * math.pi - abs(s[4]) <= self.alpha_flat:
+            return ("next", t, "face", s, side)
+        gam, _ = _edge_velocity(h, s, side)
+        if gam[2] > 1e-9 * max(1.0, float(np.linalg.norm(gam))):
+            return ("next", t, "flight", s, None)
+        return ("next", t, "contact", s, side)
+
+    def _strike(self, t, s, side, kind):
+        """Impacts at rim edge ``side``, then at whichever edge still approaches (an upright
+        disk touches with both), at most 50 rounds.  Returns the state and the edge that
+        keeps contact."""
+        h = self.h
+        for _ in range(50):
+            e = 0.0 if self._zeno(t) else self.e
+            res = impact(self.disk, s, side, e, self.mu)
+            if e > 0.0 and 0.0 < res.contact_velocity_post[2] < self.v_capture:
+                e = 0.0
+                res = impact(self.disk, s, side, 0.0, self.mu)
+            self._impact_record(t, kind, [*res.impulse_tangential, res.impulse_normal],
+                                res.energy_lost, e)
+            s = res.post_state
+            other = -side
+            gam_o, H_o = _edge_velocity(h, s, other)
+            if h > 0.0 and H_o <= 1e-9 and gam_o[2] < -1e-12:
+                side, kind = other, "rim-change"
+                continue
+            return s, side
+        return s, side
+
+    def _flight(self, t, s):
+        h = self.h
+        self._enter(t, "flight")
+        s_start, t_skip = s, 0.0
+        if _lowest_height(h, s[2], s[4]) <= 1e-9:  # leaving the plane: step clear of it
+            for d in 10.0 ** np.arange(-7.0, -1.5, 0.5):
+                sd = free_flight(self.disk, s, d)
+                if _lowest_height(h, sd[2], sd[4]) > 1e-12:
+                    s_start, t_skip = sd, float(d)
+                    break
+            else:
+                return ("end", "failed", f"the disk neither stays on nor leaves the plane "
+                        f"at t = {t:.12g}: F_z = 0 in contact but the free disk would sink "
+                        "(Painleve's paradox of sliding with large friction; an impact "
+                        "without collision, outside this model)", t, s)
+        tau = t_skip + _touchdown(self.disk, s_start)
+        t_hit = t + tau
+        if t_hit >= self.t1:
+            s1 = free_flight(self.disk, s, self.t1 - t)
+            self.segments.append(FlightSegment(self.disk, t, self.t1, s, s1))
+            self._check([_state_energy(h, s), _state_energy(h, s1)])
+            return ("end", "completed", f"reached t = {self.t1:.12g} in flight", self.t1, s1)
+        s1 = free_flight(self.disk, s_start, tau - t_skip)
+        self.segments.append(FlightSegment(self.disk, t, t_hit, s, s1))
+        self._check([_state_energy(h, s), _state_energy(h, s1)])
+        lp = lowest_point(self.disk, s1, tol=1e-9)
+        if lp.kind == "face" or 0.5 * math.pi - abs(s1[4]) <= self.alpha_flat:
+            return ("next", t_hit, "face", s1, None)
+        if lp.kind == "tread":
+            g = {sd: _edge_velocity(h, s1, sd)[0][2] for sd in (1, -1)}
+            side = min(g, key=g.get)
+        else:
+            side = lp.side
+        s2, side = self._strike(t_hit, s1, side, "rim")
+        return self._after_impact(t_hit, s2, side)
+
+    def _contact(self, t, s, side):
+        h = self.h
+        y = _contact_from_free(s, side)
+        if _kinetic(h, s) <= self.rest_energy and h > 0.0 and abs(s[4]) < 1e-6:
+            return self._rest_on_tread(t, s)
+        if self._start_force(s, side, y) <= 0.0 and self._separates(s):
+            # the plane cannot hold it: it flies off at zero normal velocity
+            if "lift-off" in self.stop_at:
+                return ("end", "lift-off", f"lift-off at t = {t:.12g}: F_z <= 0 at the "
+                        "start of a contact phase", t, s)
+            return ("next", t, "flight", s, None)
+        t_stop = min(self.t1, t + self.chunk)
+        tr = simulate_coulomb(self.disk, self.ground, (t, t_stop), y, rtol=self.rtol,
+                              atol=self.atol, slip_tol=1e-9, alpha_min=self.alpha_flat,
+                              max_steps=self.max_steps,
+                              max_transitions=self.max_transitions,
+                              # the run's wall budget, what is left
+                              max_wall_time=max(1e-3, self.max_wall
+                                                - (time.perf_counter() - self.wall0)))
+        self.segments.append(tr)
+        self._enter(t, MODE_NAMES[int(tr.mode[0])])  # pivot-stuck sub-modes included
+        for tx in tr.transitions:
+            self._enter(tx.t, tx.to_mode)
+        self._check(tr.E + sum(tr.dissipated.values()))
+        self.D += float(sum(v[-1] for v in tr.dissipated.values()))
+        t = float(tr.t[-1])
+        yend = np.array(tr.y[:, -1])
+        s = _free_from_contact(h, yend, side)
+        if tr.status in self.stop_at:
+            return ("end", tr.status, tr.message, t, s)
+        if tr.status == "completed":
+            if h > 0.0 and abs(s[4]) < 1e-6 and _kinetic(h, s) <= self.rest_energy:
+                return self._rest_on_tread(t, s)
+            if t >= self.t1:
+                return ("end", "completed", tr.message, t, s)
+            return ("next", t, "contact", s, side)
+        if tr.status == "lift-off":
+            return ("next", t, "flight", s, None)
+        if tr.status == "fell-flat":
+            return ("next", t, "face", s, None)
+        if tr.status == "edge-contact":
+            if _kinetic(h, s) <= self.rest_energy:
+                return self._rest_on_tread(t, s)
+            if self._rim_changes_accumulate(t):
+                return self._roll_on_tread(t, s)
+            s2, side2 = self._strike(t, s, -side, "rim-change")
+            return self._after_impact(t, s2, side2)
+        return ("end", tr.status, tr.message, t, s)
+
+    def _start_force(self, s, side, y):
+        """``F_z`` in the mode :func:`simulate_coulomb` starts in at ``y``: rolling if the
+        slip is zero and rolling's friction lies in the cone, else sliding (in the solved
+        slip direction when the slip is zero)."""
+        h, g = self.h, self.ground
+        slip, _ = _edge_velocity(h, s, side)
+        U = math.hypot(slip[0], slip[1])
+        if U <= 1e-9 * (1.0 + math.hypot(s[6], s[7])):
+            c = coulomb_contact(self.disk, g, "rolling", y)
+            if c["F_t"] <= g.mu_s * c["F_z"]:
+                return c["F_z"]
+            d = slip_direction(self.disk, g, y)
+            if d is None:
+                return c["F_z"]
+            ref = _cl._to_inertial(y[4], d[0], d[1])
+        else:
+            ref = _cl._to_inertial(y[4], slip[0] / U, slip[1] / U)
+        return _cl._coulomb_sliding(h, g.mu_k, *g.coefficients, y, ref[0], ref[1])[3]
+
+    def _separates(self, s):
+        """Whether the free disk leaves the plane within 1e-2 (its lowest point rises)."""
+        h = self.h
+        for d in (1e-4, 1e-3, 1e-2):
+            sd = free_flight(self.disk, s, d)
+            if _lowest_height(h, sd[2], sd[4]) > 1e-12:
+                return True
+        return False
+
+    def _rest_on_tread(self, t, s):
+        """Zeno rule of the rocking disk: upright on its tread with kinetic energy below
+        ``rest_energy``, it stops (that energy counts as an impact loss)."""
+        h = self.h
+        rest = s.copy()
+        rest[2], rest[4] = 1.0, 0.0
+        rest[6:12] = 0.0
+        lost = _state_energy(h, s) - _state_energy(h, rest)
+        self._impact_record(t, "rim-change", np.zeros(3), lost, 0.0)
+        return ("end", "at-rest", f"at rest upright on the tread at t = {t:.12g}", t, rest)
+
+    def _rim_changes_accumulate(self, t):
+        """Zeno rule of the rim changes: the last ``zeno_count`` impacts were all rim changes
+        within ``zeno_window`` (the rocking has died out, or the disk rolls upright on its
+        tread and its contact jumps from edge to edge at one instant)."""
+        n = self.zeno_count
+        last = self.impacts[-n:]
+        return (len(last) == n and all(x.kind == "rim-change" for x in last)
+                and t - last[0].t <= self.zeno_window)
+
+    def _roll_on_tread(self, t, s):
+        """The disk stands on its tread line (``theta = 0``) and rolls on it to rest.
+
+        The rule, stated once (docs/motion.md): the tread line takes a plastic, sticking
+        impulse that conserves the angular momentum about itself, ``L = k2^2 omega2 +
+        v_Cx`` (m = a = 1, ``v_Cx`` the velocity of C across the line): the rocking
+        (``omega1``), the turning (``omega3``), the vertical and the sideways velocity
+        are removed and the disk rolls with ``omega2' = L / (1 + k2^2)`` (the rolling
+        state of least energy with that ``L``, so the impulse never creates energy).
+        Rolling upright under the rolling-resistance moment ``c F_z`` (``F_z = 1``),
+        ``d(3/4 omega2^2)/dt = -c |omega2|``: it stops after ``1.5 |omega2'| / c`` (at once
+        if ``3/4 omega2'^2 <= rest_energy``; never if ``c = 0``)."""
+        h = self.h
+        psi = s[3]
+        cp, sp = math.cos(psi), math.sin(psi)
+        v_x = s[6] * cp + s[7] * sp
+        w2 = (K2 * s[10] + v_x) / (1.0 + K2)
+        if 0.75 * w2 * w2 <= self.rest_energy:  # nothing left to roll: at rest (rule 3)
+            w2 = 0.0
+        s1 = s.copy()
+        s1[2], s1[4] = 1.0, 0.0
+        s1[6], s1[7], s1[8] = w2 * cp, w2 * sp, 0.0
+        s1[9], s1[10], s1[11] = 0.0, w2, 0.0
+        lost = _state_energy(h, s) - _state_energy(h, s1)
+        self._impact_record(t, "tread", s1[6:9] - s[6:9], lost, 0.0)
+        self._enter(t, "rolling")
+        c = float(self.ground.coefficients[0])
+        dt = 0.0 if w2 == 0.0 else math.inf if c == 0.0 else 1.5 * abs(w2) / c
+        t_end = min(t + dt, self.t1)
+        tau = t_end - t
+        w_end = math.copysign(max(0.0, abs(w2) - c * tau / 1.5), w2) if t_end < t + dt else 0.0
+        dist = 0.5 * (w2 + w_end) * tau  # v_Cx = omega2 and d phi/dt = omega2 at theta = 0
+        s2 = s1.copy()
+        s2[0] += dist * cp
+        s2[1] += dist * sp
+        s2[5] += dist
+        s2[6], s2[7], s2[10] = w_end * cp, w_end * sp, w_end
+        self.D += 0.75 * (w2 * w2 - w_end * w_end)
+        self._check(_state_energy(h, s2))
+        where = f"rolling upright on its tread from t = {t:.12g} (rim changes accumulated)"
+        if t + dt <= self.t1:
+            return ("end", "at-rest", f"at rest upright on the tread at t = {t_end:.12g}, "
+                    f"{where}", t_end, s2)
+        return ("end", "completed", f"reached t = {t_end:.12g} {where}", t_end, s2)
+
+    def _flat(self, t, s):
+        h = self.h
+        flat, spin, face, lost, dVz = _face_impact(h, s)
+        self._impact_record(t, "face", np.array([0.0, 0.0, dVz]), lost, 0.0)
+        self._check(_state_energy(h, flat))
+        if "fell-flat" in self.stop_at:
+            return ("end", "fell-flat", f"fell flat at t = {t:.12g}", t, s)
+        self._enter(t, "flat")
+        V = math.hypot(flat[6], flat[7])
+        d = (flat[6] / V, flat[7] / V) if V > 0.0 else (1.0, 0.0)
+        ts, Vs, Ws, Ds, dist, ang = _flat_run(self.ground.mu_k, V, abs(spin), t, self.t1)
+        end = flat.copy()
+        end[0] += d[0] * dist
+        end[1] += d[1] * dist
+        sg = 1.0 if spin >= 0.0 else -1.0
+        end[3] += sg * ang  # the angle about the vertical turns with the spin
+        end[6], end[7] = d[0] * Vs[-1], d[1] * Vs[-1]
+        end[10] = sg * Ws[-1] * face
+        seg = FlatSegment(ts, Vs, Ws, Ds, flat, end, face)
+        self.segments.append(seg)
+        self._check(h + 0.5 * Vs ** 2 + 0.5 * K2 * Ws ** 2 + Ds)
+        self.D += float(Ds[-1])
+        if Vs[-1] == 0.0 and Ws[-1] == 0.0:
+            return ("end", "at-rest", f"at rest flat ({'eta up' if face > 0 else 'eta down'})"
+                    f" at t = {ts[-1]:.12g}", float(ts[-1]), end)
+        return ("end", "completed", f"reached t = {self.t1:.12g} lying flat, still moving",
+                float(ts[-1]), end)

@@ -1,0 +1,20 @@
+"""Applications built on the phases: the coin toss (:mod:`.toss`) and Euler's disk run to its
+end (:mod:`.euler_disk`).
+"""
+
+from rollingdisk.util.lazy import attach as _attach
+
+__getattr__, __dir__, __all__ = _attach(__name__, {
+    "toss": "rollingdisk.scenarios.toss",
+    "toss_ensemble": "rollingdisk.scenarios.toss",
+    "AIR_VISCOSITY": "rollingdisk.scenarios.euler_disk",
+    "END_KINDS": "rollingdisk.scenarios.euler_disk",
+    "FIT_WINDOW": "rollingdisk.scenarios.euler_disk",
+    "FIT_WINDOW_AIR": "rollingdisk.scenarios.euler_disk",
+    "EulerDisk": "rollingdisk.scenarios.euler_disk",
+    "EulerDiskResult": "rollingdisk.scenarios.euler_disk",
+    "creep_factor": "rollingdisk.scenarios.euler_disk",
+    "predicted_end_time": "rollingdisk.scenarios.euler_disk",
+    "predicted_exponents": "rollingdisk.scenarios.euler_disk",
+    "run_euler_disk": "rollingdisk.scenarios.euler_disk",
+})

@@ -1,0 +1,415 @@
+"""The coin toss: heads, tails or edge, from a launch to the state the coin is caught in.
+
+One toss is :func:`rollingdisk.phases.motion.simulate_to_rest` from a launch in free
+flight; an ensemble repeats it over random launches (``docs/motion.md``).  Units
+m = a = g = 1.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import time
+from collections.abc import Callable
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from rollingdisk.model.disk import Disk
+from rollingdisk.model.ground import Coulomb
+from rollingdisk.phases.motion import MotionResult, simulate_to_rest
+from rollingdisk.util.checks import check_int, check_real
+from rollingdisk.util.errors import ParameterError, ParameterTypeError
+
+__all__ = ["TOSS_OUTCOMES", "TossResult", "toss", "TossDistribution", "EnsembleResult",
+           "toss_ensemble", "energy_barrier"]
+
+#: What a toss gives: ``heads`` (lying flat, axis eta up), ``tails`` (eta down), ``edge``
+#: (upright on its tread), ``undecided`` (the run ended otherwise: end time, a budget).
+TOSS_OUTCOMES = ("heads", "tails", "edge", "undecided")
+
+
+def energy_barrier(h: float) -> float:
+    """``sqrt(1 + h^2)`` [``m g a``]: the height of the centre when the disk balances on a
+    rim edge with its centre straight above it (``theta = +-arctan h``).
+
+    Below this energy the disk can never again pass ``|theta| = arctan h``: its lowest
+    point's height ``Z_C - sqrt(1 - eta_Z^2) - h |eta_Z|`` is at least 0 and ``Z_C <= E``,
+    while ``sqrt(1 - eta_Z^2) + h |eta_Z|`` reaches ``sqrt(1 + h^2)`` at
+    ``|eta_Z| = h/sqrt(1 + h^2)``; the energy never grows (impacts, friction).
+    """
+    h = check_real("h", h, low=0.0)
+    return math.sqrt(1.0 + h * h)
+
+
+def _trap(h):
+    Eb = energy_barrier(h)
+    s_b = h / Eb  # sin(arctan h)
+
+    def decide(E, s):
+        if E >= Eb * (1.0 - 1e-12):
+            return None
+        ez = math.sin(s[4])  # eta_Z
+        side = "heads" if ez > s_b else "tails" if ez < -s_b else "edge"
+        return f"energy {E:.9g} below the barrier sqrt(1 + h^2) = {Eb:.9g}: {side}"
+    return decide
+
+
+@dataclass(frozen=True, eq=False)
+class TossResult:
+    """One toss.
+
+    Attributes
+    ----------
+    outcome : {"heads", "tails", "edge", "undecided"}
+    decided_by : {"rest", "energy", "none"}
+        ``rest``: the run reached rest; ``energy``: the energy fell below
+        :func:`energy_barrier` with the axis in one basin (the outcome can no longer
+        change); ``none``: undecided.
+    t : float
+        When it was decided [``sqrt(a/g)``].
+    n_impacts : int
+    motion : MotionResult
+    """
+
+    outcome: str
+    decided_by: str
+    t: float
+    n_impacts: int
+    motion: MotionResult
+
+    def __repr__(self) -> str:
+        return (f"TossResult(outcome={self.outcome!r}, decided_by={self.decided_by!r}, "
+                f"t={self.t:.6g}, n_impacts={self.n_impacts})")
+
+
+#: Mode events a contact segment of a toss may take (stick-slip chatter on the rim): a
+#: toss that chatters past them is ``undecided`` either way, so it stops early (measured:
+#: 10 000 events cost about 1.8 s a toss, 1000 about 0.2 s, same verdicts).
+TOSS_MAX_TRANSITIONS = 1000
+
+
+def _classify(h, res: MotionResult):
+    s = res.final_state
+    if res.status == "at-rest":
+        st = math.sin(s[4])
+        if abs(st) < 0.5:
+            return "edge", "rest"
+        return ("heads" if st > 0 else "tails"), "rest"
+    if res.status == "completed" and "below the barrier" in res.message:
+        return res.message.rsplit(": ", 1)[-1], "energy"
+    return "undecided", "none"
+
+
+def toss(disk: Disk, height: float, velocity: float, spin: float, tilt: float = 0.0, *,
+         e: float = 0.5, mu: float = 0.5, axial_spin: float = 0.0, precession: float = 0.0,
+         horizontal_velocity: float = 0.0, rolling_resistance: float = 0.01,
+         t_end: float = 1000.0, early: bool = True, max_wall: float = 120.0,
+         rtol: float = 1e-8, atol: float = 1e-10) -> TossResult:
+    """Toss the coin and see how it lands.
+
+    Parameters
+    ----------
+    disk : Disk
+    height : float
+        Height of the centre at launch [``a``]; the disk must be above the plane,
+        ``height >= |cos tilt| + h |sin tilt|``.
+    velocity : float
+        Vertical velocity of the centre at launch [``sqrt(a g)``], up if positive.
+    spin : float
+        Angular velocity about the horizontal diameter xi, ``omega1`` [``sqrt(g/a)``]: the
+        flipping of the toss.
+    tilt : float
+        ``theta`` at launch [rad]: 0 the coin stands upright, ``+pi/2`` heads up.
+    e, mu : float
+        Restitution ``[0, 1]`` and friction ``>= 0`` of the impacts and of the ground
+        (``Coulomb(mu)``).
+    axial_spin, precession : float
+        ``omega2`` (about the axis eta) and ``omega3`` at launch [``sqrt(g/a)``].
+    horizontal_velocity : float
+        ``V_X`` at launch [``sqrt(a g)``].
+    rolling_resistance : float
+        Coefficient ``c`` of :class:`~rollingdisk.model.ground.RollingResistance` of the
+        ground [``a``], ``>= 0``: without it a coin rolling on its rim never stops.
+    t_end : float
+        Longest simulated time.
+    early : bool
+        Stop as soon as the energy falls below :func:`energy_barrier` (the outcome is
+        then certain); ``False`` runs on to rest.
+    max_wall : float
+        Wall-clock budget [s].
+    rtol, atol : float
+        Tolerances of the contact phases (looser than :func:`simulate_to_rest`'s default:
+        the outcome, not the last digit, is wanted).
+
+    Returns
+    -------
+    TossResult
+
+    Raises
+    ------
+    ParameterError
+        ``height`` puts the disk inside the plane; ``e`` outside ``[0, 1]``; ``mu < 0``.
+
+    Examples
+    --------
+    >>> r = toss(Disk(0.1), height=3.0, velocity=2.0, spin=5.0, tilt=0.3, e=0.3)
+    >>> r.outcome in ("heads", "tails"), r.decided_by
+    (True, 'energy')
+    """
+    if not isinstance(disk, Disk):
+        raise ParameterTypeError(f"disk must be a rollingdisk.Disk, got {disk!r}")
+    h = disk.h
+    tilt = check_real("tilt", tilt)
+    low = abs(math.cos(tilt)) + h * abs(math.sin(tilt))
+    height = check_real("height", height)
+    if height < low:
+        raise ParameterError(f"height must be at least |cos tilt| + h |sin tilt| = {low:.6g} "
+                             f"(the disk would start inside the plane), got {height!r}")
+    vals = [check_real(n, v) for n, v in (("velocity", velocity), ("spin", spin),
+                                          ("axial_spin", axial_spin),
+                                          ("precession", precession),
+                                          ("horizontal_velocity", horizontal_velocity))]
+    e = check_real("e", e, low=0.0, high=1.0)
+    mu = check_real("mu", mu, low=0.0)
+    t_end = check_real("t_end", t_end, low=0.0, low_open=True)
+    v, w1, w2, w3, vx = vals
+    s0 = [0.0, 0.0, height, 0.0, tilt, 0.0, vx, 0.0, v, w1, w2, w3]
+    c_roll = check_real("rolling_resistance", rolling_resistance, low=0.0)
+    res = simulate_to_rest(disk, Coulomb(mu, rolling_resistance=c_roll), (0.0, t_end), s0,
+                           e=e, mu_impact=mu, decide=_trap(h) if early else None,
+                           chunk=1.0, max_wall=max_wall, rtol=rtol, atol=atol,
+                           max_steps=20_000, max_transitions=TOSS_MAX_TRANSITIONS)
+    out, by = _classify(h, res)
+    return TossResult(out, by, res.t_end, len(res.impacts), res)
+
+
+@dataclass(frozen=True)
+class TossDistribution:
+    """Random launch conditions, each uniform on ``[low, high]`` (independent).
+
+    Attributes (``(low, high)`` each)
+    ----------
+    lift : height of the centre above ``1 + h`` [``a``]
+    velocity : vertical launch velocity [``sqrt(a g)``]
+    spin : ``omega1``, the flip [``sqrt(g/a)``]
+    tilt : ``theta`` [rad]
+    axial_spin, precession : ``omega2``, ``omega3`` [``sqrt(g/a)``]
+    horizontal_velocity : ``V_X`` [``sqrt(a g)``]
+    """
+
+    lift: tuple = (0.5, 2.5)
+    velocity: tuple = (0.0, 4.0)
+    spin: tuple = (-10.0, 10.0)
+    tilt: tuple = (-0.5 * math.pi, 0.5 * math.pi)
+    axial_spin: tuple = (-1.0, 1.0)
+    precession: tuple = (-1.0, 1.0)
+    horizontal_velocity: tuple = (-0.5, 0.5)
+
+    NAMES = ("lift", "velocity", "spin", "tilt", "axial_spin", "precession",
+             "horizontal_velocity")
+
+    def draw(self, n: int, seed: int) -> np.ndarray:
+        """``(n, 7)`` launches, columns :attr:`NAMES`, from ``numpy.random.default_rng(seed)``
+        (the same for any number of workers or a resumed run)."""
+        rng = np.random.default_rng(seed)
+        lo = np.array([getattr(self, k)[0] for k in self.NAMES], float)
+        hi = np.array([getattr(self, k)[1] for k in self.NAMES], float)
+        return lo + (hi - lo) * rng.random((n, len(self.NAMES)))
+
+
+@dataclass(frozen=True, eq=False)
+class EnsembleResult:
+    """Outcome frequencies over random tosses.
+
+    Attributes
+    ----------
+    h : float
+    n : int
+    seed : int
+    outcomes : tuple of str
+        Per toss, in launch order.
+    counts : dict
+        ``{outcome: count}`` over :data:`TOSS_OUTCOMES`.
+    wall_time : float
+        Seconds (this call; a resumed run counts only the new tosses).
+    params : dict
+        ``e``, ``mu`` and the distribution.
+    """
+
+    h: float
+    n: int
+    seed: int
+    outcomes: tuple
+    counts: dict
+    wall_time: float
+    params: dict = field(default_factory=dict)
+
+    @property
+    def frequencies(self) -> dict:
+        """``{outcome: count/n}``."""
+        return {k: c / self.n for k, c in self.counts.items()}
+
+    def interval(self, outcome: str, z: float = 1.96) -> tuple[float, float]:
+        """Wilson score interval of the probability of ``outcome`` (``z = 1.96``: 95 %)."""
+        n, k = self.n, self.counts[outcome]
+        p = k / n
+        d = 1.0 + z * z / n
+        c = (p + z * z / (2 * n)) / d
+        w = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / d
+        return max(0.0, c - w), min(1.0, c + w)
+
+    def as_dict(self) -> dict:
+        return {"h": self.h, "n": self.n, "seed": self.seed, "counts": self.counts,
+                "frequencies": self.frequencies, "wall_time": self.wall_time,
+                "params": self.params,
+                "intervals": {k: list(self.interval(k)) for k in TOSS_OUTCOMES}}
+
+    def __repr__(self) -> str:
+        c = ", ".join(f"{k}={v}" for k, v in self.counts.items())
+        return f"EnsembleResult(h={self.h:g}, n={self.n}, {c})"
+
+
+def _load_compiled():
+    """An ensemble is a long job: load the compiled contact phase
+    (:mod:`rollingdisk.ivp.fastsegment`) at once instead of after the process's
+    uncompiled budget (compiling it if numba's cache is cold: about 7 s, once per
+    machine); without numba the tosses run on the scipy path."""
+    from rollingdisk.ivp import fastsegment as _fs
+
+    if _fs.available():
+        try:
+            _fs.compiled()
+        except Exception:  # noqa: BLE001 - numba broken: the scipy path still works
+            pass
+
+
+def _one(args):
+    h, row, e, mu, t_end, max_wall = args
+    lift, v, w1, tilt, w2, w3, vx = row
+    r = toss(Disk(h), 1.0 + h + lift, v, w1, tilt, e=e, mu=mu, axial_spin=w2,
+             precession=w3, horizontal_velocity=vx, t_end=t_end, max_wall=max_wall)
+    return r.outcome, r.decided_by, r.t, r.n_impacts
+
+
+def _read_done(path: Path, header: dict) -> dict:
+    """Completed tosses of a results file written for the same ensemble (a torn last line,
+    from an interrupted run, is ignored); a file of another ensemble is refused."""
+    done = {}
+    with path.open() as f:
+        lines = f.read().split("\n")
+    for k, line in enumerate(lines):
+        if not line.strip():
+            continue
+        try:
+            rec = json.loads(line)
+        except json.JSONDecodeError:
+            if k >= len(lines) - 2:
+                continue
+            raise ParameterError(f"results: {path} is not a toss-results file "
+                                 f"(line {k + 1} unreadable)") from None
+        if k == 0:
+            if rec.get("ensemble") != header["ensemble"]:
+                raise ParameterError(f"results: {path} holds another ensemble "
+                                     f"({rec.get('ensemble')}); give a new file")
+            continue
+        done[int(rec["i"])] = rec
+    return done
+
+
+def toss_ensemble(disk: Disk, n: int, rng_seed: int, *, e: float = 0.5, mu: float = 0.5,
+                  distribution: TossDistribution | None = None, t_end: float = 1000.0,
+                  workers: int = 1, results: str | os.PathLike | None = None,
+                  max_wall: float = 20.0,
+                  progress: Callable[[int, int], None] | None = None) -> EnsembleResult:
+    """Estimate the probabilities of heads, tails and edge over random launches.
+
+    Parameters
+    ----------
+    disk : Disk
+    n : int
+        Number of tosses, ``>= 1``.
+    rng_seed : int
+        Seed of ``numpy.random.default_rng``: the launches (:meth:`TossDistribution.draw`)
+        and so the result depend on it alone.
+    e, mu : float
+        Restitution and friction (:func:`toss`).
+    distribution : TossDistribution, optional
+        The launch conditions (default :class:`TossDistribution`).
+    t_end : float
+        Longest simulated time of one toss.
+    workers : int
+        Processes (``1``: this one).
+    results : path, optional
+        A JSON-lines file: a header, then one line per toss as it finishes (flushed).  If
+        it exists for the same ensemble (disk, seed, n, e, mu, distribution), the tosses
+        in it are not run again: an interrupted ensemble resumes.
+    max_wall : float
+        Wall-clock budget of one toss [s] (beyond it: ``undecided``).
+    progress : callable, optional
+        ``progress(done, n)``.
+
+    Returns
+    -------
+    EnsembleResult
+    """
+    if not isinstance(disk, Disk):
+        raise ParameterTypeError(f"disk must be a rollingdisk.Disk, got {disk!r}")
+    n = check_int("n", n, low=1)
+    seed = check_int("rng_seed", rng_seed, low=0)
+    workers = check_int("workers", workers, low=1, high=256)
+    e = check_real("e", e, low=0.0, high=1.0)
+    mu = check_real("mu", mu, low=0.0)
+    dist = TossDistribution() if distribution is None else distribution
+    if not isinstance(dist, TossDistribution):
+        raise ParameterTypeError(f"distribution must be a TossDistribution, got {dist!r}")
+    rows = dist.draw(n, seed)
+    params = {"e": e, "mu": mu, "t_end": t_end, "distribution": asdict(dist)}
+    header = {"ensemble": {"h": disk.h, "n": n, "seed": seed, **params}}
+    header = json.loads(json.dumps(header))  # tuples as lists, as read back
+    done: dict = {}
+    fh = None
+    if results is not None:
+        path = Path(results)
+        if path.exists() and path.stat().st_size > 0:
+            done = _read_done(path, header)
+            fh = path.open("a")
+        else:
+            fh = path.open("w")
+            fh.write(json.dumps(header) + "\n")
+            fh.flush()
+    todo = [i for i in range(n) if i not in done]
+    wall0 = time.perf_counter()
+    if todo:
+        _load_compiled()  # compiled once here, so that the workers only load it
+    args = [(disk.h, tuple(rows[i]), e, mu, t_end, max_wall) for i in todo]
+    try:
+        if workers == 1 or len(todo) < 2:
+            it = ((i, _one(a)) for i, a in zip(todo, args))
+            _collect(it, done, fh, progress, n)
+        else:
+            import multiprocessing as mp
+
+            with mp.get_context("spawn").Pool(workers, initializer=_load_compiled) as pool:
+                it = zip(todo, pool.imap(_one, args, chunksize=4))
+                _collect(it, done, fh, progress, n)
+    finally:
+        if fh is not None:
+            fh.close()
+    outcomes = tuple(done[i]["outcome"] for i in range(n))
+    counts = {k: outcomes.count(k) for k in TOSS_OUTCOMES}
+    return EnsembleResult(disk.h, n, seed, outcomes, counts, time.perf_counter() - wall0,
+                          params)
+
+
+def _collect(it, done, fh, progress, n):
+    for i, (out, by, t, k) in it:
+        rec = {"i": i, "outcome": out, "decided_by": by, "t": t, "n_impacts": k}
+        done[i] = rec
+        if fh is not None:
+            fh.write(json.dumps(rec) + "\n")
+            fh.flush()
+        if progress is not None:
+            progress(len(done), n)
