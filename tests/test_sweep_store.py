@@ -17,7 +17,7 @@ from rollingdisk.util.errors import ParameterError
 
 xr = pytest.importorskip("xarray")
 sweep = pytest.importorskip("rollingdisk.sweep")
-from rollingdisk.sweep import store as _store  # noqa: E402
+from rollingdisk.util import lock as _locks  # noqa: E402
 
 SRC = Path(__file__).resolve().parents[1] / "src"
 
@@ -101,7 +101,7 @@ def test_stale_lock_of_a_dead_process_is_taken_over(tmp_path):
 def test_pid_lock_without_fcntl(tmp_path, monkeypatch):
     """Where fcntl is missing the lock file's pid decides: a live owner refuses, a dead
     one's lock is taken over."""
-    monkeypatch.setattr(_store, "fcntl", None)
+    monkeypatch.setattr(_locks, "fcntl", None)
     out = tmp_path / "s.nc"
     partial = tmp_path / "s.nc.partial"
     partial.mkdir()

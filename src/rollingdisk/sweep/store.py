@@ -6,10 +6,8 @@ a sweep, ``basin.json`` of a basin sweep) and the finished records (``chunk_NNNN
 ``round_NNN.npz``), each written under a temporary name and renamed: that rename is the
 record's completion mark.  Only the process that holds the lock reads, resets or writes
 the folder, so two runs into one ``out`` never mix their records: the second is refused
-while the first runs.  The lock is an exclusive ``fcntl.flock`` on ``lock`` (released by
-the kernel when its process dies, however it dies); where ``fcntl`` is missing the file's
-existence is the lock and the pid written in it lets a later run take over the lock of a
-dead process (on POSIX).
+while the first runs.  The lock is :mod:`rollingdisk.util.lock`'s (an exclusive ``fcntl.flock``
+on ``lock``, released by the kernel when its process dies).
 """
 
 from __future__ import annotations
@@ -26,12 +24,8 @@ import numpy as np
 
 from rollingdisk.model.outcomes import outcome
 from rollingdisk.sweep.grid import BOUND_FACTOR, GROW_HI, GROW_LO, _Spec
+from rollingdisk.util import lock as _locks
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
-
-try:
-    import fcntl
-except ImportError:  # pragma: no cover - not POSIX
-    fcntl = None
 
 __all__ = ["open_sweep", "check_out", "partial_store", "PartialStore", "describe"]
 
@@ -61,81 +55,18 @@ def _busy(folder: Path, pid: int | None) -> ParameterError:
         f"finish or choose another out (if no such process runs, delete {folder / LOCK})")
 
 
-def _read_pid(path: Path) -> int | None:
-    try:
-        return int(path.read_text().split()[0])
-    except (OSError, ValueError, IndexError):
-        return None
-
-
-def _pid_alive(pid: int) -> bool:
-    if os.name != "posix":  # no safe probe: never take over
-        return True
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:  # alive, another user's
-        return True
-    return True
-
-
-def _try_flock(path: Path) -> int | None:
-    """The fd of ``path`` locked exclusively, None if it vanished meanwhile; raises
-    BlockingIOError if another process holds it."""
-    fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
-    try:
-        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        # the previous owner may have removed the file between our open and our lock
-        if os.stat(path).st_ino == os.fstat(fd).st_ino:
-            return fd
-    except FileNotFoundError:
-        pass
-    except BaseException:
-        os.close(fd)
-        raise
-    os.close(fd)
-    return None
-
-
-def _try_pidfile(path: Path) -> int | None:
-    """The fd of a newly created ``path``, None after removing a dead owner's; raises
-    BlockingIOError if a live process owns it."""
-    try:
-        return os.open(path, os.O_RDWR | os.O_CREAT | os.O_EXCL, 0o666)
-    except FileExistsError:
-        pid = _read_pid(path)
-        if pid is None or _pid_alive(pid):
-            raise BlockingIOError from None
-        with contextlib.suppress(FileNotFoundError):  # a dead owner's: take it over
-            path.unlink()
-        return None
-
-
 def _lock(folder: Path) -> int:
     """Lock ``folder`` (created if missing) for this process; an open fd of its lock file.
 
     Raises :class:`ParameterError` naming the owner's pid if another process holds it."""
-    path = folder / LOCK
-    for _ in range(20):
-        folder.mkdir(exist_ok=True)
-        try:
-            fd = _try_flock(path) if fcntl is not None else _try_pidfile(path)
-        except BlockingIOError:
-            raise _busy(folder, _read_pid(path)) from None
-        except FileNotFoundError:  # the folder went away meanwhile
-            continue
-        if fd is not None:
-            os.ftruncate(fd, 0)
-            os.write(fd, f"{os.getpid()}\n".encode())
-            return fd
-    raise _busy(folder, _read_pid(path))
+    try:
+        return _locks.acquire(folder / LOCK, make_folder=True)
+    except _locks.Busy as busy:
+        raise _busy(folder, busy.pid) from None
 
 
 def _unlock(folder: Path, fd: int) -> None:
-    with contextlib.suppress(FileNotFoundError):
-        (folder / LOCK).unlink()
-    os.close(fd)
+    _locks.release(folder / LOCK, fd)
 
 
 # --------------------------------------------------------------------- partial store
