@@ -44,10 +44,11 @@ def configure(subparsers):
                    help="wall-clock budget of one toss in seconds (default 20); a toss "
                    "that spends it counts as undecided")
     p.add_argument("--workers", type=integer("workers", 1, 256), default=1,
-                   help="processes (default 1)")
+                   help="processes (default 1), at most the CPUs this process may use")
     p.add_argument("--results", default=None, metavar="FILE.jsonl",
                    help="one JSON line per toss, appended as each ends; an interrupted "
-                   "ensemble resumes from it")
+                   "ensemble resumes from it (one writer at a time; a file that is not "
+                   "a toss-results file is refused)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--out", default=None, metavar="FILE.png",
                    help="a bar chart of the outcome probabilities with their intervals")
@@ -58,12 +59,20 @@ def run(args) -> int:
     """Run the ensemble, print (and plot) its frequencies; 0 when done."""
     from rollingdisk.scenarios.toss import TOSS_OUTCOMES, toss_ensemble
     from rollingdisk.util.files import check_writable
+    from rollingdisk.util.progress import ProgressBar
 
     disk = disk_from_args(args)
     if args.out:
         check_writable(args.out, name="out")
-    res = toss_ensemble(disk, args.n, args.seed, e=args.e, mu=args.mu,
-                        workers=args.workers, results=args.results, max_wall=args.max_wall)
+    # a progress line on a terminal (never in a pipe or with --json)
+    bar = ProgressBar(label="tossing", delay=1.0, interval=0.5,
+                      quiet=args.json or not sys.stderr.isatty())
+    try:
+        res = toss_ensemble(disk, args.n, args.seed, e=args.e, mu=args.mu,
+                            workers=args.workers, results=args.results,
+                            max_wall=args.max_wall, progress=bar)
+    finally:
+        bar.close()
     if args.json:
         print(json.dumps(res.as_dict(), allow_nan=False))
     else:

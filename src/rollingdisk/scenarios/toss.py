@@ -7,13 +7,14 @@ m = a = g = 1.
 
 from __future__ import annotations
 
+import contextlib
+import itertools
 import json
 import math
 import os
 import time
 from collections.abc import Callable
 from dataclasses import asdict, dataclass, field
-from pathlib import Path
 
 import numpy as np
 
@@ -22,6 +23,7 @@ from rollingdisk.model.ground import Coulomb
 from rollingdisk.phases.motion import MotionResult, simulate_to_rest
 from rollingdisk.util.checks import check_int, check_real
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
+from rollingdisk.util.journal import open_journal
 
 __all__ = ["TOSS_OUTCOMES", "TossResult", "toss", "TossDistribution", "EnsembleResult",
            "toss_ensemble", "energy_barrier"]
@@ -294,29 +296,56 @@ def _one(args):
     return r.outcome, r.decided_by, r.t, r.n_impacts
 
 
-def _read_done(path: Path, header: dict) -> dict:
-    """Completed tosses of a results file written for the same ensemble (a torn last line,
-    from an interrupted run, is ignored); a file of another ensemble is refused."""
-    done = {}
-    with path.open() as f:
-        lines = f.read().split("\n")
-    for k, line in enumerate(lines):
-        if not line.strip():
-            continue
-        try:
-            rec = json.loads(line)
-        except json.JSONDecodeError:
-            if k >= len(lines) - 2:
-                continue
-            raise ParameterError(f"results: {path} is not a toss-results file "
-                                 f"(line {k + 1} unreadable)") from None
-        if k == 0:
-            if rec.get("ensemble") != header["ensemble"]:
-                raise ParameterError(f"results: {path} holds another ensemble "
-                                     f"({rec.get('ensemble')}); give a new file")
-            continue
-        done[int(rec["i"])] = rec
-    return done
+#: Most tosses of one ensemble (its outcomes are kept, 8 bytes a toss).
+N_MAX = 10_000_000
+
+#: Launches drawn, and tosses handed to the workers, per block: the ensemble streams
+#: (memory flat in ``n``); the draws are the same as :meth:`TossDistribution.draw`'s.
+BLOCK = 1024
+
+
+def max_workers() -> int:
+    """The most worker processes an ensemble takes: the CPUs this process may use (a
+    toss is CPU-bound; each worker holds about 180 MB, so more processes than CPUs only
+    cost memory)."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):  # pragma: no cover - not Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def _launches(dist: TossDistribution, n: int, seed: int):
+    """``(i, row)`` for ``i < n``: the rows of ``dist.draw(n, seed)``, drawn a block at a
+    time (``Generator.random`` fills row after row from one stream, so blocks give the
+    same numbers)."""
+    rng = np.random.default_rng(seed)
+    lo = np.array([getattr(dist, k)[0] for k in dist.NAMES], float)
+    hi = np.array([getattr(dist, k)[1] for k in dist.NAMES], float)
+    for start in range(0, n, BLOCK):
+        rows = lo + (hi - lo) * rng.random((min(BLOCK, n - start), len(dist.NAMES)))
+        for k, row in enumerate(rows):
+            yield start + k, tuple(row)
+
+
+def _record_check(n: int):
+    """The check of one journal record of an ensemble of ``n`` tosses (its index and
+    outcome kept)."""
+    def check(rec):
+        i = rec["i"]
+        if type(i) is not int or not 0 <= i < n:
+            raise ValueError(f"toss index {i!r} outside [0, {n})")
+        if rec["outcome"] not in TOSS_OUTCOMES:
+            raise ValueError(f"outcome {rec['outcome']!r} not one of {TOSS_OUTCOMES}")
+        if rec["decided_by"] not in ("rest", "energy", "none"):
+            raise ValueError(f"decided_by {rec['decided_by']!r}")
+        k = rec["n_impacts"]
+        if type(k) is not int or k < 0:
+            raise ValueError(f"n_impacts {k!r}")
+        t = rec["t"]
+        if t is not None and (type(t) not in (int, float) or not math.isfinite(t)):
+            raise ValueError(f"t {t!r}")
+        return i, rec["outcome"]
+    return check
 
 
 def toss_ensemble(disk: Disk, n: int, rng_seed: int, *, e: float = 0.5, mu: float = 0.5,
@@ -330,7 +359,7 @@ def toss_ensemble(disk: Disk, n: int, rng_seed: int, *, e: float = 0.5, mu: floa
     ----------
     disk : Disk
     n : int
-        Number of tosses, ``>= 1``.
+        Number of tosses, in ``[1, N_MAX]`` (10**7).
     rng_seed : int
         Seed of ``numpy.random.default_rng``: the launches (:meth:`TossDistribution.draw`)
         and so the result depend on it alone.
@@ -341,11 +370,15 @@ def toss_ensemble(disk: Disk, n: int, rng_seed: int, *, e: float = 0.5, mu: floa
     t_end : float
         Longest simulated time of one toss.
     workers : int
-        Processes (``1``: this one).
+        Processes (``1``: this one), at most ``max_workers()`` (the CPUs this process
+        may use).
     results : path, optional
-        A JSON-lines file: a header, then one line per toss as it finishes (flushed).  If
-        it exists for the same ensemble (disk, seed, n, e, mu, distribution), the tosses
-        in it are not run again: an interrupted ensemble resumes.
+        A JSON-lines file of ours (:mod:`rollingdisk.util.journal`): a header, then one
+        line per toss as it finishes, written whole.  If it exists for the same ensemble
+        (disk, seed, n, e, mu, distribution), the tosses in it are not run again: an
+        interrupted ensemble resumes.  One writer at a time: another process writing it
+        is refused (its pid named), as is a file that is not a toss-results file, a line
+        that is not a toss, a folder, a device or a full disk (the file is left whole).
     max_wall : float
         Wall-clock budget of one toss [s] (beyond it: ``undecided``).
     progress : callable, optional
@@ -354,62 +387,78 @@ def toss_ensemble(disk: Disk, n: int, rng_seed: int, *, e: float = 0.5, mu: floa
     Returns
     -------
     EnsembleResult
+
+    Raises
+    ------
+    ParameterError
+        A value out of its range, or ``results`` refused (see above).
+
+    Notes
+    -----
+    The launches are drawn, and handed to the workers, :data:`BLOCK` at a time: memory
+    stays flat in ``n`` and nothing is built up front.
     """
     if not isinstance(disk, Disk):
         raise ParameterTypeError(f"disk must be a rollingdisk.Disk, got {disk!r}")
-    n = check_int("n", n, low=1)
+    n = check_int("n", n, low=1, high=N_MAX)
     seed = check_int("rng_seed", rng_seed, low=0)
-    workers = check_int("workers", workers, low=1, high=256)
+    workers = check_int("workers", workers, low=1, high=max_workers())
     e = check_real("e", e, low=0.0, high=1.0)
     mu = check_real("mu", mu, low=0.0)
+    t_end = check_real("t_end", t_end, low=0.0, low_open=True)
+    max_wall = check_real("max_wall", max_wall, low=0.0, low_open=True)
     dist = TossDistribution() if distribution is None else distribution
     if not isinstance(dist, TossDistribution):
         raise ParameterTypeError(f"distribution must be a TossDistribution, got {dist!r}")
-    rows = dist.draw(n, seed)
     params = {"e": e, "mu": mu, "t_end": t_end, "distribution": asdict(dist)}
     header = {"ensemble": {"h": disk.h, "n": n, "seed": seed, **params}}
     header = json.loads(json.dumps(header))  # tuples as lists, as read back
-    done: dict = {}
-    fh = None
-    if results is not None:
-        path = Path(results)
-        if path.exists() and path.stat().st_size > 0:
-            done = _read_done(path, header)
-            fh = path.open("a")
-        else:
-            fh = path.open("w")
-            fh.write(json.dumps(header) + "\n")
-            fh.flush()
-    todo = [i for i in range(n) if i not in done]
-    wall0 = time.perf_counter()
-    if todo:
-        _load_compiled()  # compiled once here, so that the workers only load it
-    args = [(disk.h, tuple(rows[i]), e, mu, t_end, max_wall) for i in todo]
-    try:
-        if workers == 1 or len(todo) < 2:
-            it = ((i, _one(a)) for i, a in zip(todo, args))
-            _collect(it, done, fh, progress, n)
+    with contextlib.ExitStack() as stack:
+        journal, outcomes = None, [None] * n
+        if results is not None:
+            journal, kept = stack.enter_context(
+                open_journal(results, header, _record_check(n), name="results",
+                             kind="toss-results file"))
+            for i, out in kept:
+                outcomes[i] = out
+        n_done = sum(o is not None for o in outcomes)
+        wall0 = time.perf_counter()
+        todo = ((i, (disk.h, row, e, mu, t_end, max_wall))
+                for i, row in _launches(dist, n, seed) if outcomes[i] is None)
+        if n_done < n:
+            _load_compiled()  # compiled once here, so that the workers only load it
+        if workers == 1 or n - n_done < 2:
+            _collect(((i, _one(a)) for i, a in todo), outcomes, n_done, journal, progress, n)
         else:
             import multiprocessing as mp
 
-            with mp.get_context("spawn").Pool(workers, initializer=_load_compiled) as pool:
-                it = zip(todo, pool.imap(_one, args, chunksize=4))
-                _collect(it, done, fh, progress, n)
-    finally:
-        if fh is not None:
-            fh.close()
-    outcomes = tuple(done[i]["outcome"] for i in range(n))
+            pool = stack.enter_context(mp.get_context("spawn").Pool(
+                min(workers, n - n_done), initializer=_load_compiled))
+            _collect(_blocks(pool, todo, workers), outcomes, n_done, journal, progress, n)
+    outcomes = tuple(outcomes)
     counts = {k: outcomes.count(k) for k in TOSS_OUTCOMES}
     return EnsembleResult(disk.h, n, seed, outcomes, counts, time.perf_counter() - wall0,
                           params)
 
 
-def _collect(it, done, fh, progress, n):
+def _blocks(pool, todo, workers):
+    """``(i, result)`` of the tosses ``todo`` run by ``pool``, handed over a block at a
+    time (``Pool.imap`` would take the whole iterable at once)."""
+    while True:
+        block = list(itertools.islice(todo, BLOCK))
+        if not block:
+            return
+        ids = [i for i, _ in block]
+        chunk = max(1, min(4, len(block) // (4 * workers)))
+        yield from zip(ids, pool.imap(_one, [a for _, a in block], chunksize=chunk))
+
+
+def _collect(it, outcomes, n_done, journal, progress, n):
     for i, (out, by, t, k) in it:
-        rec = {"i": i, "outcome": out, "decided_by": by, "t": t, "n_impacts": k}
-        done[i] = rec
-        if fh is not None:
-            fh.write(json.dumps(rec) + "\n")
-            fh.flush()
+        outcomes[i] = out
+        n_done += 1
+        if journal is not None:
+            journal.append({"i": i, "outcome": out, "decided_by": by,
+                            "t": t if math.isfinite(t) else None, "n_impacts": k})
         if progress is not None:
-            progress(len(done), n)
+            progress(n_done, n)
