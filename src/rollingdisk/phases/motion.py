@@ -421,10 +421,21 @@ def _face_impact(h, s):
     return flat, spin, face, lost, -s[8]
 
 
-def _touchdown(disk, s):
+class _Spent(Exception):  # noqa: N818 - a state: the wall budget ran out inside a phase
+    """The run's wall-clock budget ran out inside a phase (its ``t``: where it was)."""
+
+
+#: Heights the touchdown scan evaluates between two looks at the wall clock (~20 ms).
+_SCAN_BLOCK = 1024
+
+
+def _touchdown(disk, s, deadline: float = math.inf):
     """:func:`touchdown_time`; where its conservative advancement stalls on a grazing
     flight (the lowest point skimming the plane), a scan of the closed-form height on a
-    grid of steps ``<= 0.1/(1 + |omega|)`` and ``brentq`` on the first sign change."""
+    grid of steps ``<= 0.1/(1 + |omega|)`` and ``brentq`` on the first sign change.
+
+    The scan raises :class:`_Spent` once ``time.perf_counter()`` passes ``deadline`` (a
+    long flight of a tall or fast-spinning disk: millions of grid points, minutes)."""
     try:
         return touchdown_time(disk, s, inside_tol=1e-9)
     except RuntimeError:
@@ -441,9 +452,10 @@ def _touchdown(disk, s):
     T = V + math.sqrt(V * V + 2.0 * max(Z - min(1.0, h), 0.0)) + 1e-9
     dt = 0.1 / (1.0 + float(np.linalg.norm(s[9:12])))
     ts = np.arange(0.0, T + dt, dt)
-    Hs = [H(x) for x in ts]
     for i in range(1, ts.size):
-        if Hs[i] <= 0.0:
+        if i % _SCAN_BLOCK == 0 and time.perf_counter() > deadline:
+            raise _Spent(float(ts[i]))
+        if H(ts[i]) <= 0.0:
             return brentq(H, ts[i - 1], ts[i], xtol=1e-15, rtol=8.9e-16)
     return float(ts[-1])
 
@@ -733,7 +745,12 @@ class _Motion:
                         f"at t = {t:.12g}: F_z = 0 in contact but the free disk would sink "
                         "(Painleve's paradox of sliding with large friction; an impact "
                         "without collision, outside this model)", t, s)
-        tau = t_skip + _touchdown(self.disk, s_start)
+        try:
+            tau = t_skip + _touchdown(self.disk, s_start, self.wall0 + self.max_wall)
+        except _Spent as spent:
+            return ("end", "time-budget", f"wall-time budget exhausted: {self.max_wall:g} s "
+                    f"by t = {t:.12g} (finding the touchdown of a flight, searched to "
+                    f"t = {t + t_skip + spent.args[0]:.12g})", t, s)
         t_hit = t + tau
         if t_hit >= self.t1:
             s1 = free_flight(self.disk, s, self.t1 - t)

@@ -1,0 +1,57 @@
+"""Issue 36: budgets known up front, outputs that are not ours, one line and exit 2, signals
+in every phase (the command line's run paths; the API's hostile inputs are elsewhere).
+
+No test here depends on the machine's speed: budgets are held with clocks replaced by
+counters, refusals come before any work.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+import rollingdisk as rd
+from rollingdisk.cli.app import main
+from rollingdisk.phases import motion as _motion
+from rollingdisk.scenarios.toss import TossDistribution, toss
+
+
+def test_the_touchdown_scan_of_a_tall_disk_holds_the_wall_budget(monkeypatch):
+    """A toss of a disk with h = 1e8 (``toss --h 1e8 --seed 0``) falls for t ~ 1.4e4 on a
+    grid step ~ 1e-2: the touchdown scan had 1.4 million heights to evaluate (69 s with a
+    5 s budget).  It looks at the clock every 1024 heights: past the deadline it stops,
+    and the run ends with status time-budget saying where it was."""
+    h = 1e8
+    lift, v, w1, tilt, w2, w3, vx = TossDistribution().draw(1, 0)[0]  # toss --seed 0
+    s = [0.0, 0.0, 1.0 + h + lift, 0.0, tilt, 0.0, vx, 0.0, v, w1, w2, w3]
+    with pytest.raises(_motion._Spent):
+        _motion._touchdown(rd.Disk(h), s, deadline=-math.inf)
+
+    def spent(disk, s, deadline):
+        assert deadline == pytest.approx(t0 + 5.0, abs=60.0)
+        raise _motion._Spent(3.0)
+
+    t0 = _motion.time.perf_counter()
+    monkeypatch.setattr(_motion, "_touchdown", spent)
+    r = toss(rd.Disk(0.1), 3.0, 1.0, 2.0, 0.3, max_wall=5.0)
+    assert (r.outcome, r.motion.status) == ("undecided", "time-budget")
+    assert "touchdown" in r.motion.message and "5 s" in r.motion.message
+
+
+def test_the_touchdown_scan_is_the_same_without_a_deadline():
+    """The deadline changes nothing when it is not reached: the scan (forced by a
+    conservative advancement that gives up) finds the closed-form touchdown of a
+    disk falling flat, Z_C = 2 - t^2/2 reaching h (theta = pi/2 - 1e-3, no spin)."""
+    h, th = 0.1, 0.5 * math.pi - 1e-3
+    s = [0.0, 0.0, 2.0, 0.0, th, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+    low = abs(math.cos(th)) + h * abs(math.sin(th))
+    exact = math.sqrt(2.0 * (2.0 - low))
+    real = _motion.touchdown_time
+    try:
+        _motion.touchdown_time = lambda *a, **k: (_ for _ in ()).throw(RuntimeError("stall"))
+        t = _motion._touchdown(rd.Disk(h), s)
+        t_late = _motion._touchdown(rd.Disk(h), s, deadline=math.inf)
+    finally:
+        _motion.touchdown_time = real
+    assert t == t_late and abs(t - exact) < 1e-12
