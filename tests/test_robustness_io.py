@@ -55,3 +55,28 @@ def test_the_touchdown_scan_is_the_same_without_a_deadline():
     finally:
         _motion.touchdown_time = real
     assert t == t_late and abs(t - exact) < 1e-12
+
+
+def _one_line(capsys, status, args):
+    assert main([str(a) for a in args]) == status
+    captured = capsys.readouterr()
+    err = captured.err.strip()
+    assert len(err.splitlines()) == 1, err
+    return err, captured.out
+
+
+@pytest.mark.parametrize("extra", [[], ["--basin"]])
+def test_a_sweep_too_large_is_refused_up_front_saying_what_fits(tmp_path, capsys, extra):
+    """10^5 x 10^5 points (an ETA of days, a store of hundreds of GB) is refused before
+    any work, on stderr even with --json, with the points per range that would fit."""
+    out = tmp_path / "s.zarr"
+    err, stdout = _one_line(capsys, 2, ["sweep", "--ground", "rough", "--theta0",
+                                        "0.3:1.2:100000", "--omega30", "1:3:100000",
+                                        "--t-end", "10", "--out", out, "--json", *extra])
+    assert stdout == ""
+    assert "10000000000" in err or "x 11 rounds" in err
+    assert "at most" in err and "points on each of the 2 ranges" in err
+    per = int(err.split("at most ")[1].split()[0])
+    rounds = 11 if extra else 1
+    assert per * per * rounds <= 10_000_000 < (per + 1) ** 2 * rounds
+    assert list(tmp_path.iterdir()) == []

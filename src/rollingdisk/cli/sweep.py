@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import sys
 import time
 
 from rollingdisk.cli._args import (
@@ -35,6 +36,9 @@ from rollingdisk.util.errors import INPUT_ERRORS
 
 #: Most points of one A:B:N range.
 RANGE_POINTS_MAX = 100_000
+#: Most runs of one sweep (grid points, times the bisection rounds + 1 of a basin sweep):
+#: about 1 GB of store (~100 bytes a run) and, at ~10^4 runs/s, 20 min for t_end = 100.
+SWEEP_RUNS_MAX = 10_000_000
 
 
 def sweep_range(text: str) -> list[float]:
@@ -90,7 +94,8 @@ def configure(sub):
                    help="largest bounded kick by bisection (--kick is the upper end)")
     p.add_argument("--rounds", type=positive_int, default=10, help="bisection rounds")
     x = p.add_mutually_exclusive_group()
-    x.add_argument("--workers", type=positive_int, default=None, help="local cores")
+    x.add_argument("--workers", type=positive_int, default=None,
+                   help="local cores (numba threads, at most NUMBA_NUM_THREADS: the CPUs)")
     x.add_argument("--dask", default=None, metavar="ADDRESS|local",
                    help="run on a Dask cluster (its scheduler's address, or local)")
     p.add_argument("--chunk", type=positive_int, default=2048,
@@ -135,16 +140,34 @@ def _h_values(args) -> list[float]:
     return [disk_from_args(args).h]
 
 
+def _check_size(grid, args) -> None:
+    """Refuse, before any work, a sweep of more than :data:`SWEEP_RUNS_MAX` runs, saying
+    what would fit."""
+    shape = [k for k in grid.shape if k > 1] or [1]
+    rounds = args.rounds + 1 if args.basin else 1
+    runs = math.prod(shape) * rounds
+    if runs <= SWEEP_RUNS_MAX:
+        return
+    per = int((SWEEP_RUNS_MAX // rounds) ** (1.0 / len(shape)))
+    what = " x ".join(str(k) for k in shape) + (f" x {rounds} rounds" if rounds > 1 else "")
+    raise CLIError(f"rollingdisk sweep: error: {what} = {runs} runs is more than one sweep "
+                   f"may do ({SWEEP_RUNS_MAX}, about 1 GB of store); give at most "
+                   f"{per} points on each of the {len(shape)} ranges, or split the sweep")
+
+
 def run(args) -> int:
     from rollingdisk.sweep import Perturbation, basin_sweep, run_sweep
     from rollingdisk.sweep.summary import stability_agreement
     from rollingdisk.util.progress import ProgressBar
 
     grid = _grid(args)
+    _check_size(grid, args)
     disk = disk_from_args(args) if _physical(args) else None
     start = time.perf_counter()
     executor = "dask" if args.dask else ("threads" if args.workers != 1 else "serial")
-    bar = ProgressBar(label="sweep", delay=0.0, interval=0.5, quiet=args.json)
+    # with --json the bar (on stderr) is drawn on a terminal only
+    bar = ProgressBar(label="sweep", delay=0.0, interval=0.5,
+                      quiet=args.json and not sys.stderr.isatty())
     try:
         if args.basin:
             ds = basin_sweep(grid, args.t_end, kick_max=1.0 if args.kick is None else args.kick,
