@@ -8,6 +8,9 @@ counters, refusals come before any work.
 from __future__ import annotations
 
 import math
+import os
+import stat
+import threading
 
 import pytest
 
@@ -80,3 +83,70 @@ def test_a_sweep_too_large_is_refused_up_front_saying_what_fits(tmp_path, capsys
     rounds = 11 if extra else 1
     assert per * per * rounds <= 10_000_000 < (per + 1) ** 2 * rounds
     assert list(tmp_path.iterdir()) == []
+
+
+# ------------------------------------------------------------------ item 2: outputs
+needs_dev_full = pytest.mark.skipif(not os.path.exists("/dev/full"), reason="no /dev/full")
+
+
+@needs_dev_full
+def test_a_full_disk_under_an_output_other_than_out_is_one_line(capsys, monkeypatch):
+    """ENOSPC while writing --sound (the command's --out unset) was a traceback: a full or
+    read-only destination is one line naming it, whichever option named it."""
+    from rollingdisk.cli import euler_disk as command
+    from rollingdisk.util.files import atomic_file
+
+    def run(args):
+        with atomic_file(args.sound, "wb") as fh:
+            fh.write(b"RIFF" * 4096)
+        return 0
+
+    monkeypatch.setattr(command, "run", run)
+    err, _ = _one_line(capsys, 2, ["euler-disk", "--sound", "/dev/full"])
+    assert err == "rollingdisk euler-disk: error: /dev/full: No space left on device"
+
+
+@needs_dev_full
+@pytest.mark.slow
+def test_euler_disk_sound_to_a_full_disk(capsys):
+    err, _ = _one_line(capsys, 2, ["euler-disk", "--sound", "/dev/full", "--sound-seconds",
+                                   "0.5", "--quiet"])
+    assert err.endswith("/dev/full: No space left on device")
+
+
+def test_a_writer_that_seeks_can_write_to_a_fifo(tmp_path):
+    """An animation or image writer seeks in its file (a GIF's header is written last):
+    to a FIFO it writes a temporary file that is copied over whole at the end; the FIFO
+    stays a FIFO."""
+    from rollingdisk.util.files import atomic_file
+
+    fifo = tmp_path / "f.gif"
+    os.mkfifo(fifo)
+    got = []
+    reader = threading.Thread(target=lambda: got.append(fifo.read_bytes()))
+    reader.start()
+    try:
+        with atomic_file(fifo, mode=None) as tmp:
+            assert tmp.suffix.endswith(".gif") and tmp.is_file()
+            with open(tmp, "wb") as f:
+                f.write(b"....body")
+                f.seek(0)
+                f.write(b"HEAD")
+    finally:
+        if reader.is_alive():  # never leave the reader blocked
+            with open(fifo, "wb"):
+                pass
+        reader.join(timeout=60)
+    assert got == [b"HEADbody"]
+    assert stat.S_ISFIFO(os.stat(fifo).st_mode) and not tmp.exists()
+
+
+@pytest.mark.filterwarnings("error")
+@pytest.mark.parametrize("extra", [[], ["--until-rest"]])
+def test_a_ground_beyond_floating_point_range_is_one_line(capsys, extra):
+    """--air 1.7e308: the equations are not finite at the start (hybrid._Singular at t =
+    0, a traceback, after two RuntimeWarnings): refused in one line, no warning."""
+    err, out = _one_line(capsys, 2, ["simulate", "--h", "0.1", "--ground", "coulomb", "--mu",
+                                     "0.5", "--air", "1.7e308", "--theta0", "0.3", "--rC",
+                                     "2", "--t-end", "1", *extra])
+    assert "not finite at the initial state" in err and out == ""

@@ -230,20 +230,25 @@ def _stopped(interrupted: bool, n_done: int = 0) -> int:
 
 #: errno values that mean the user's destination is full or read-only, whatever the file.
 _DESTINATION_ERRNOS = {"ENOSPC", "EDQUOT", "EFBIG", "EROFS"}
+#: The options that name an output of a command (their ``dest``).
+_OUTPUT_OPTIONS = ("out", "sound", "animate", "results")
 
 
 def _on_user_path(exc: OSError, args) -> bool:
-    """Whether ``exc`` concerns the output the user named (``--out``): its folder (or the
-    folder a symbolic link leads to), the file or folder itself, or the temporary files
-    written beside it."""
+    """Whether ``exc`` concerns an output the user named (``--out``, ``--sound``,
+    ``--animate``, ``--results``): a full or read-only destination, whatever the file; its
+    folder (or the folder a symbolic link leads to), the file or folder itself, or the
+    temporary files written beside it."""
     import errno
 
-    out = getattr(args, "out", None)
-    if out is None:
-        return False
     if errno.errorcode.get(exc.errno) in _DESTINATION_ERRNOS:
         return True
-    folders = {os.path.dirname(os.path.abspath(out)), os.path.dirname(os.path.realpath(out))}
+    folders = set()
+    for key in _OUTPUT_OPTIONS:
+        out = getattr(args, key, None)
+        if isinstance(out, (str, os.PathLike)):
+            folders |= {os.path.dirname(os.path.abspath(out)),
+                        os.path.dirname(os.path.realpath(out))}
     for name in (exc.filename, exc.filename2):
         if name is None:
             continue

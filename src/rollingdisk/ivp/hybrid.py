@@ -184,6 +184,12 @@ def energy_balance(traj: Trajectory) -> float:
     return float(np.max(np.abs(total - total[0])) / max(abs(total[0]), 1.0))
 
 
+#: The refusal of a start where the equations are not finite.
+_NOT_FINITE = ("the equations of motion are not finite at the initial state ({t}): a ground "
+               "coefficient (air, mu, rolling_resistance, pivot) or the state is beyond "
+               "floating-point range")
+
+
 class _Singular(ArithmeticError):
     """The right-hand side left floating-point range (scipy's DOP853 would loop on NaN)."""
 
@@ -535,7 +541,11 @@ class _Hybrid:
         n = math.hypot(*W)
         if n > 0.0:
             self.run.rref = (W[0] / n, W[1] / n)
-        self.mode = self._initial_roll(self._initial_pivot(self._initial_mode()))
+        with np.errstate(all="ignore"):  # a non-finite start is refused just below
+            self.mode = self._initial_roll(self._initial_pivot(self._initial_mode()))
+            dy, *powers = self.run.solve(self.mode, self.z)[:8]
+        if not (np.all(np.isfinite(dy)) and np.all(np.isfinite(powers))):
+            raise ParameterError(_NOT_FINITE.format(t=f"t = {t0:.12g}"))
         self.points.add(t0, self.z, self.mode, pinned=True)
 
     def _initial_mode(self):
@@ -631,9 +641,16 @@ class _Hybrid:
         if self.compiled:
             return self._segment_compiled(0.0)
         stiff = self.method == "stiff"
-        solver = (_LSODA() if stiff else _DOP853())(
-            run.rhs(self.mode), self.t, self.z, self.t1, rtol=o["rtol"], atol=o["atol"],
-            max_step=o["max_step"])
+        try:
+            with np.errstate(all="ignore"):
+                solver = (_LSODA() if stiff else _DOP853())(
+                    run.rhs(self.mode), self.t, self.z, self.t1, rtol=o["rtol"],
+                    atol=o["atol"], max_step=o["max_step"])
+        except _Singular as exc:  # the solver's set-up evaluates the right-hand side
+            self.status = "failed"
+            self.message = (f"the equations became singular at {exc} (a non-finite right-hand "
+                            f"side, theta = {self.z[5]:.6g} at a mode change)")
+            return False
         g_old = run.events(self.mode, self.z)
         clock = time.perf_counter()
         n_here = 0

@@ -823,7 +823,12 @@ class _Motion:
     def _start_force(self, s, side, y):
         """``F_z`` in the mode :func:`simulate_coulomb` starts in at ``y``: rolling if the
         slip is zero and rolling's friction lies in the cone, else sliding (in the solved
-        slip direction when the slip is zero)."""
+        slip direction when the slip is zero).  Computed with numpy's warnings off: a
+        start beyond floating-point range is refused by :func:`simulate_coulomb` next."""
+        with np.errstate(all="ignore"):
+            return self._start_force_of(s, side, y)
+
+    def _start_force_of(self, s, side, y):
         h, g = self.h, self.ground
         slip, _ = _edge_velocity(h, s, side)
         U = math.hypot(slip[0], slip[1])

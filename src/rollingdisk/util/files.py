@@ -11,7 +11,9 @@ before the work, not after it.
 Destinations that are not regular files: a symbolic link is written through (the file it
 points to is replaced, the link stays, as ``cp`` and shell redirection do); a character
 device or a FIFO (``/dev/null``, ``/dev/stdout``, a named pipe) is written directly, never
-replaced by a file.  Permissions follow the umask, as for a file created with ``open``.
+replaced by a file (a writer that opens the file itself, and may seek in it, writes a
+temporary file that is then copied to it).  Permissions follow the umask, as for a file
+created with ``open``.
 :func:`committed` lists the outputs completed so far, so that an interruption that comes
 after them can say they are whole.
 """
@@ -227,15 +229,21 @@ def atomic_file(path, mode: str = "w", **open_kw) -> Iterator:
     Yields an open file object (``mode`` ``"w"``, ``"wb"``, ...).  With ``mode=None`` it
     yields the temporary :class:`~pathlib.Path` instead (for writers that open the file
     themselves, e.g. ``savefig``; keep the suffix of ``path``).  A symbolic link is
-    written through; a character device or FIFO is opened (or yielded) directly.
+    written through; a character device or FIFO is opened directly (with ``mode=None``:
+    a temporary file is yielded and copied to it at the end).
     """
     target = _resolve(path)
     if _is_stream(target):
-        if mode is None:
-            yield target
-        else:
-            with open(target, mode, **open_kw) as fh:
-                yield fh
+        try:
+            if mode is None:  # the writer may seek: a temporary file, then copied over
+                with _stream_copy(target, Path(os.fspath(path)).suffix) as tmp:
+                    yield tmp
+            else:
+                with open(target, mode, **open_kw) as fh:
+                    yield fh
+        except OSError as exc:
+            _name(exc, path)
+            raise
         _COMMITTED.append(target)
         return
     fd, tmp = tempfile.mkstemp(prefix=f".{target.stem}.", suffix=f".tmp{target.suffix}",
@@ -252,13 +260,41 @@ def atomic_file(path, mode: str = "w", **open_kw) -> Iterator:
         check_signals()
         os.replace(tmp, target)
         _COMMITTED.append(target)
-    except BaseException:
+    except BaseException as exc:
         with contextlib.suppress(OSError):
             if mode is None:
                 os.close(fd)
         with contextlib.suppress(OSError):
             tmp.unlink()
+        if isinstance(exc, OSError):
+            _name(exc, path)
         raise
+
+
+@contextlib.contextmanager
+def _stream_copy(target: Path, suffix: str) -> Iterator[Path]:
+    """A temporary file (in the system's temporary folder) for a writer that opens its
+    file itself and may seek in it (an image or animation writer), copied to the device
+    or FIFO ``target`` when the writer is done, and removed in any case."""
+    fd, tmp = tempfile.mkstemp(prefix=".rollingdisk.", suffix=f".tmp{suffix}")
+    os.close(fd)
+    tmp = Path(tmp)
+    try:
+        yield tmp
+        check_signals()
+        with open(tmp, "rb") as src, open(target, "wb") as dst:
+            shutil.copyfileobj(src, dst)
+    finally:
+        with contextlib.suppress(OSError):
+            tmp.unlink()
+
+
+def _name(exc: OSError, path) -> None:
+    """Name the destination in an error of a write (``write`` and ``close`` leave
+    ``filename`` unset: "No space left on device" alone does not say where)."""
+    if exc.filename is None and exc.errno is not None:
+        with contextlib.suppress(TypeError, ValueError):
+            exc.filename = os.fspath(path)
 
 
 def _swap_in(tmp: Path, target: Path, attempts: int = 50) -> None:
