@@ -150,3 +150,50 @@ def test_a_ground_beyond_floating_point_range_is_one_line(capsys, extra):
                                      "0.5", "--air", "1.7e308", "--theta0", "0.3", "--rC",
                                      "2", "--t-end", "1", *extra])
     assert "not finite at the initial state" in err and out == ""
+
+
+# -------------------------------------------------------------- item 3: sweep outputs
+_SWEEP = ["sweep", "--ground", "rough", "--theta0", "0.3:1.2:2", "--omega30", "1:3:2",
+          "--t-end", "5"]
+
+
+@pytest.mark.parametrize("kind", ["fifo", "foreign folder", "file"])
+def test_a_sweep_never_replaces_what_is_not_a_store(tmp_path, capsys, kind):
+    out = tmp_path / "s.zarr"
+    if kind == "fifo":
+        os.mkfifo(out)
+    elif kind == "foreign folder":
+        out.mkdir()
+        (out / "thesis.tex").write_text("mine")
+    else:
+        out.write_text("mine")
+    before = sorted(p.name for p in tmp_path.rglob("*"))
+    err, _ = _one_line(capsys, 2, [*_SWEEP, "--out", out])
+    assert err.startswith("rollingdisk sweep: error: out:")
+    assert sorted(p.name for p in tmp_path.rglob("*")) == before
+    if kind == "fifo":
+        assert stat.S_ISFIFO(os.stat(out).st_mode)
+
+
+@pytest.mark.parametrize("basin", [False, True])
+@pytest.mark.parametrize("error", ["input", "disk full"])
+def test_a_sweep_that_ends_in_exit_2_leaves_no_partial_folder(tmp_path, capsys, monkeypatch,
+                                                              basin, error):
+    """The records are written, then the store cannot be (a full disk, a refused value):
+    exit 2, one line, and no ``*.partial`` folder behind."""
+    import errno
+
+    from rollingdisk.sweep import basin as _basin
+    from rollingdisk.sweep import runner as _runner
+    from rollingdisk.util.errors import ParameterError
+
+    def save(ds, out):
+        if error == "input":
+            raise ParameterError("out: refused")
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(_basin if basin else _runner, "save", save)
+    out = tmp_path / "s.zarr"
+    _one_line(capsys, 2, [*_SWEEP, "--out", out, "--json",
+                          *(["--basin", "--rounds", "1"] if basin else [])])
+    assert list(tmp_path.iterdir()) == []

@@ -34,7 +34,11 @@ LOCK = "lock"
 
 
 def check_out(out) -> Path:
-    """``out`` as a Path ending in ``.zarr`` or ``.nc`` in an existing folder."""
+    """``out`` as a Path ending in ``.zarr`` or ``.nc`` that a sweep may write: in an
+    existing writable folder; a ``.zarr`` not a file, a FIFO or a device, and if it exists a
+    Zarr store or an empty folder (it is replaced as a whole); a ``.nc`` not a folder."""
+    from rollingdisk.util.files import check_writable
+
     try:
         out = Path(os.fspath(out))
     except TypeError:
@@ -44,6 +48,20 @@ def check_out(out) -> Path:
         raise ParameterError(f"out must end in .zarr or .nc, got {str(out)!r}")
     if not out.parent.is_dir():
         raise ParameterError(f"out: folder {str(out.parent)!r} does not exist")
+    if len(out.name) > 200:
+        raise ParameterError(f"out: the name is too long ({len(out.name)} characters, at "
+                             "most 200 with the .partial folder beside it)")
+    zarr = out.suffix == ".zarr"
+    target = check_writable(out, name="out", folder=zarr)
+    if zarr and target.is_dir():
+        try:
+            names = set(os.listdir(target))
+        except OSError as exc:
+            raise ParameterError(f"out: cannot read the folder {target}: "
+                                 f"{exc.strerror or exc}") from None
+        if names and not names & {".zgroup", ".zattrs", "zarr.json"}:
+            raise ParameterError(f"out: {target} is a folder that is not a Zarr store and "
+                                 "would be replaced as a whole; give a new name")
     return out
 
 
@@ -119,8 +137,10 @@ def partial_store(out: Path, key: str, key_file: str) -> Iterator[PartialStore]:
     """Lock ``OUT.partial`` and yield it as a :class:`PartialStore` for ``key``.
 
     A folder left by a run with another key is emptied first.  On success the folder is
-    removed; on an exception it is kept when it holds finished records (a rerun resumes
-    from them) and removed otherwise.  The lock is released in every case."""
+    removed; on an interruption (Ctrl-C, SIGTERM, a bug) it is kept when it holds
+    finished records (a rerun resumes from them); on an input or output error
+    (``ParameterError``, ``OSError``) and otherwise it is removed.  The lock is released
+    in every case."""
     folder = out.with_name(out.name + ".partial")
     fd = _lock(folder)
     store = PartialStore(folder, key)
@@ -133,8 +153,12 @@ def partial_store(out: Path, key: str, key_file: str) -> Iterator[PartialStore]:
         if old != key:
             store._reset(key_file)
         yield store
-    except BaseException:
-        keep = bool(list(folder.glob("*.npz")))  # finished records: a rerun resumes
+    except BaseException as exc:
+        # finished records of an interrupted run are kept: a rerun resumes from them; a
+        # run that ended in an error (exit 2: bad input, an output that cannot be
+        # written) leaves nothing behind
+        keep = (not isinstance(exc, (ParameterError, ParameterTypeError, OSError))
+                and bool(list(folder.glob("*.npz"))))
         raise
     finally:
         if not keep:
