@@ -197,3 +197,23 @@ def test_a_sweep_that_ends_in_exit_2_leaves_no_partial_folder(tmp_path, capsys, 
     _one_line(capsys, 2, [*_SWEEP, "--out", out, "--json",
                           *(["--basin", "--rounds", "1"] if basin else [])])
     assert list(tmp_path.iterdir()) == []
+
+
+# ---------------------------------------------------- item 5: exit 2 is exactly one line
+@pytest.mark.parametrize("host", ["no.such.host.invalid", "999.1.1.1", "a..b"])
+def test_explore_on_an_address_that_cannot_be_bound_is_one_line(capsys, host):
+    """The "binding beyond localhost" warning came before the error (2-4 lines): it is
+    now printed only once the address is bound."""
+    pytest.importorskip("rollingdisk.explore")
+    err, out = _one_line(capsys, 2, ["explore", "--host", host, "--no-browser"])
+    assert err.startswith(f"rollingdisk explore: error: cannot serve on {host}:")
+    assert out == ""
+
+
+@pytest.mark.filterwarnings("error")
+def test_an_until_rest_start_whose_energy_overflows_is_one_line(capsys):
+    """omega3 = 1e160: 49 lines (warnings of every phase, then the error); now one."""
+    err, out = _one_line(capsys, 2, ["simulate", "--h", "0.1", "--ground", "coulomb",
+                                     "--mu", "0.5", "--until-rest", "--state",
+                                     "theta=0.3,omega3=1e160", "--t-end", "10"])
+    assert "energy overflows floating point" in err and out == ""

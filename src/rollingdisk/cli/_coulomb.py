@@ -103,6 +103,7 @@ def run_until_rest(args, disk, ground, motion) -> tuple[dict, list]:
 
         check_writable(args.animate, name="--animate")
     y0 = _coulomb_state(args, disk, motion)
+    _check_finite_energy(disk, y0)
     res = simulate_to_rest(disk, ground, (0.0, args.t_end), y0, e=args.restitution,
                            max_wall=args.max_wall_time)
     if args.animate is not None:
@@ -121,3 +122,20 @@ def run_until_rest(args, disk, ground, motion) -> tuple[dict, list]:
         **({"animation": args.animate} if args.animate is not None else {}),
     }
     return {k: finite_or_none(v) for k, v in record.items()}, transitions
+
+
+def _check_finite_energy(disk, y0) -> None:
+    """Refuse a start whose energy overflows floating point (``omega3 = 1e160``), before
+    the run: its phases would each warn of the overflow before failing."""
+    import math
+
+    import numpy as np
+
+    from rollingdisk.model.coulomb import coulomb_energy
+    from rollingdisk.util.errors import ParameterError
+
+    with np.errstate(all="ignore"):
+        energy = float(coulomb_energy(disk, np.asarray(y0, dtype=float)))
+    if not math.isfinite(energy):
+        raise ParameterError("y0 is too large: its energy overflows floating point, got "
+                             f"{np.asarray(y0, dtype=float).tolist()}")

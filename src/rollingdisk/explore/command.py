@@ -105,11 +105,9 @@ def run(args) -> int:
     import webbrowser
 
 
-    # beyond this machine only when asked for by name, and then with a warning
+    # beyond this machine only when asked for by name, and then with a warning (once the
+    # address is bound: an address that cannot be is one line, the error)
     host = args.host if args.host is not None else DEFAULT_HOST
-    if not is_loopback(host):
-        _say(f"rollingdisk explore: warning: binding {host}, beyond localhost: anyone who "
-             "can reach this machine can use the explorer (there is no authentication)")
     try:
         server = make_server(args.h, args.ground, host, args.port, verbose=args.verbose)
     except OSError as exc:
@@ -118,6 +116,9 @@ def run(args) -> int:
         _say(f"rollingdisk explore: error: cannot serve on {host}:{args.port}: "
              f"{exc.strerror or exc}{hint}")
         return 2
+    if not is_loopback(host):
+        _say(f"rollingdisk explore: warning: binding {host}, beyond localhost: anyone who "
+             "can reach this machine can use the explorer (there is no authentication)")
     try:
         print(f"rollingdisk explore: serving {server.url}  (Ctrl-C stops)", flush=True)
         if not args.no_browser:
