@@ -10,7 +10,10 @@ from __future__ import annotations
 import math
 import os
 import stat
+import subprocess
+import sys
 import threading
+from pathlib import Path
 
 import pytest
 
@@ -217,3 +220,89 @@ def test_an_until_rest_start_whose_energy_overflows_is_one_line(capsys):
                                      "--mu", "0.5", "--until-rest", "--state",
                                      "theta=0.3,omega3=1e160", "--t-end", "10"])
     assert "energy overflows floating point" in err and out == ""
+
+
+# ------------------------------------------------------------------- item 6: signals
+SRC = Path(__file__).resolve().parents[1] / "src"
+
+AFTER_WORK = """
+import atexit, os, signal, sys
+import rollingdisk.cli.app as app
+real = app.main
+def main(argv):
+    status = real(argv)
+    if {when!r} == "returning":
+        os.kill(os.getpid(), signal.{sig})
+    else:  # during the interpreter's shutdown, before the entry's last word
+        atexit.register(os.kill, os.getpid(), signal.{sig})
+    return status
+app.main = main
+import rollingdisk.cli.entry as entry
+sys.argv = ["rollingdisk", "thresholds", "--h", "0.2"]
+sys.exit(entry.main())
+"""
+
+
+@pytest.mark.parametrize("when", ["returning", "shutdown"])
+@pytest.mark.parametrize("sig, code, word", [("SIGINT", 130, "interrupted"),
+                                             ("SIGTERM", 143, "terminated")])
+def test_a_signal_after_the_work_is_one_line_not_a_silent_death(when, sig, code, word):
+    """A signal in the ~0.15 s after the command is done (its outputs complete) killed
+    the process with no line (status -2 / -15): the signals are blocked once the work is
+    done and the last exit handler reports a pending one."""
+    res = subprocess.run([sys.executable, "-c", AFTER_WORK.format(when=when, sig=sig)],
+                         capture_output=True, text=True, timeout=120,
+                         env=dict(os.environ, PYTHONPATH=str(SRC)))
+    assert res.returncode == code, res.stderr
+    assert res.stderr.strip() == f"rollingdisk: {word}", res.stderr
+    assert res.stdout.startswith("stability thresholds")
+
+
+FORKED = """
+import multiprocessing, os, signal, sys
+from rollingdisk.util.files import quiet_forked_children
+# a signal in the child's first instant, before anything of its own runs
+os.register_at_fork(after_in_child=lambda: os.kill(os.getpid(), signal.{sig}))
+quiet_forked_children()
+signal.signal(signal.SIGINT, signal.default_int_handler)
+p = multiprocessing.get_context("fork").Process(target=print, args=("helper ran",))
+p.start()
+p.join(60)
+print("exitcode", p.exitcode)
+"""
+
+
+@pytest.mark.skipif(not hasattr(os, "register_at_fork"), reason="no fork")
+@pytest.mark.parametrize("sig, exitcode, ran", [("SIGINT", 0, True),
+                                                ("SIGTERM", -15, False)])
+def test_a_forked_helper_starts_with_no_handler_of_ours(sig, exitcode, ran):
+    """atlas's animation helper printed a KeyboardInterrupt traceback when the signal
+    reached it before it set its handlers: now it ignores SIGINT and dies quietly on
+    SIGTERM from its first instant."""
+    res = subprocess.run([sys.executable, "-c", FORKED.format(sig=sig)], capture_output=True,
+                         text=True, timeout=120, env=dict(os.environ, PYTHONPATH=str(SRC)))
+    assert res.returncode == 0 and res.stderr == "", res.stderr
+    assert f"exitcode {exitcode}" in res.stdout
+    assert ("helper ran" in res.stdout) == ran
+
+
+def test_spawned_helpers_never_see_sigint_and_the_parent_keeps_it():
+    """Spawned helpers (the toss's workers) start with SIGINT blocked; a Ctrl-C meanwhile
+    is the parent's, delivered by the end of the block."""
+    import signal
+
+    from rollingdisk.util.files import helpers_block_sigint
+
+    got = []
+    old = signal.signal(signal.SIGINT, lambda *a: got.append(a[0]))
+    try:
+        with helpers_block_sigint():
+            child = subprocess.run([sys.executable, "-c", "import signal; print(int(signal."
+                                    "SIGINT in signal.pthread_sigmask(signal.SIG_BLOCK, [])))"],
+                                   capture_output=True, text=True, timeout=120)
+            os.kill(os.getpid(), signal.SIGINT)
+        assert got == [signal.SIGINT]
+        assert signal.SIGINT not in signal.pthread_sigmask(signal.SIG_BLOCK, [])
+    finally:
+        signal.signal(signal.SIGINT, old)
+    assert child.stdout.strip() == "1"

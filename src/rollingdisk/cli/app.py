@@ -38,6 +38,7 @@ from rollingdisk.util.files import (
     check_signals,
     committed,
     pending_signal,
+    quiet_forked_children,
     terminate_as_exception,
 )
 
@@ -176,6 +177,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     n_done = len(committed())
     try:
         with terminate_as_exception():  # first: a signal while the parser is built counts
+            quiet_forked_children()  # helpers start with no handler of ours (atlas)
             parser = build_parser()
             try:
                 args = parser.parse_args(argv)

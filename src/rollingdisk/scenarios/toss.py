@@ -23,6 +23,7 @@ from rollingdisk.model.ground import Coulomb
 from rollingdisk.phases.motion import MotionResult, simulate_to_rest
 from rollingdisk.util.checks import check_int, check_real
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
+from rollingdisk.util.files import helpers_block_sigint
 from rollingdisk.util.journal import open_journal
 
 __all__ = ["TOSS_OUTCOMES", "TossResult", "toss", "TossDistribution", "EnsembleResult",
@@ -432,8 +433,9 @@ def toss_ensemble(disk: Disk, n: int, rng_seed: int, *, e: float = 0.5, mu: floa
         else:
             import multiprocessing as mp
 
-            pool = stack.enter_context(mp.get_context("spawn").Pool(
-                min(workers, n - n_done), initializer=_load_compiled))
+            with helpers_block_sigint():  # a Ctrl-C is the parent's to report
+                pool = stack.enter_context(mp.get_context("spawn").Pool(
+                    min(workers, n - n_done), initializer=_load_compiled))
             _collect(_blocks(pool, todo, workers), outcomes, n_done, journal, progress, n)
     outcomes = tuple(outcomes)
     counts = {k: outcomes.count(k) for k in TOSS_OUTCOMES}

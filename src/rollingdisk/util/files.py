@@ -35,7 +35,7 @@ from rollingdisk.util.errors import ParameterError
 
 __all__ = ["Terminated", "atomic_file", "atomic_dir", "check_writable",
            "check_replaceable", "terminate_as_exception", "check_signals", "pending_signal",
-           "committed"]
+           "committed", "quiet_forked_children", "helpers_block_sigint"]
 
 #: Signals received while :func:`terminate_as_exception` is active (see check_signals).
 _PENDING: list[int] = []
@@ -102,6 +102,63 @@ def terminate_as_exception() -> Iterator[None]:
         signal.signal(signal.SIGTERM, old)
         signal.signal(signal.SIGINT, old_int)
         sys.unraisablehook = old_hook
+
+
+_STOP_SIGNALS = {signal.SIGINT, signal.SIGTERM}
+_FORK_MASK: list = []
+
+
+def _block_for_fork() -> None:
+    _FORK_MASK.append(signal.pthread_sigmask(signal.SIG_BLOCK, _STOP_SIGNALS))
+
+
+def _unblock_in_parent() -> None:
+    if _FORK_MASK:
+        signal.pthread_sigmask(signal.SIG_SETMASK, _FORK_MASK.pop())
+
+
+def _quiet_in_child() -> None:
+    _FORK_MASK.clear()
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, _STOP_SIGNALS)
+
+
+_FORK_HOOKS: list = []
+
+
+def quiet_forked_children() -> None:
+    """Make every process this one forks from now on (a helper of ``multiprocessing``)
+    start with SIGINT ignored and SIGTERM at its default (a quiet death), from its first
+    instant: the signals are blocked across ``fork`` and unblocked in the child only once
+    its handlers are set.  A Ctrl-C reaches the whole process group; the parent reports
+    it in one line and stops its helpers, and a helper forked just then would otherwise
+    run the parent's handler and print a traceback.  Installed once per process."""
+    if _FORK_HOOKS or not hasattr(os, "register_at_fork") \
+            or not hasattr(signal, "pthread_sigmask"):
+        return
+    os.register_at_fork(before=_block_for_fork, after_in_parent=_unblock_in_parent,
+                        after_in_child=_quiet_in_child)
+    _FORK_HOOKS.append(True)
+
+
+@contextlib.contextmanager
+def helpers_block_sigint() -> Iterator[None]:
+    """Processes started in the block (spawned: a fresh interpreter) never see SIGINT:
+    this thread blocks it while they are started, and they inherit the blocked signal
+    (SIGTERM stays theirs: it is how their parent stops them).  A Ctrl-C reaches the
+    whole process group; the parent reports it in one line and stops its helpers, and a
+    helper's KeyboardInterrupt traceback would break that contract.  A Ctrl-C during the
+    block stays this process's: it is delivered at the end of the block at the latest."""
+    try:
+        mask = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    except (AttributeError, ValueError, OSError):  # pragma: no cover - not POSIX
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, mask)
 
 
 def pending_signal() -> int | None:
