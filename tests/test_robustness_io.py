@@ -306,3 +306,73 @@ def test_spawned_helpers_never_see_sigint_and_the_parent_keeps_it():
     finally:
         signal.signal(signal.SIGINT, old)
     assert child.stdout.strip() == "1"
+
+
+# -------------------------------------------------------------- item 7: the explorer
+def _explorer(monkeypatch, threads=2, timeout=0.5):
+    srv_mod = pytest.importorskip("rollingdisk.explore.server")
+    monkeypatch.setattr(srv_mod, "MAX_THREADS", threads)
+    monkeypatch.setattr(srv_mod._Handler, "timeout", timeout)
+    srv = srv_mod.make_server(0.17, "rough", "127.0.0.1", 0)
+    srv.start_in_thread()
+    return srv
+
+
+def _pool_threads():
+    return sum("process_request_thread" in t.name for t in threading.enumerate())
+
+
+def test_the_explorer_bounds_its_threads_and_lets_silent_clients_go(monkeypatch):
+    """Half-sent requests held a thread each with no time limit (150 held 150): at most
+    MAX_THREADS connections are served at once, a silent one is closed after the idle
+    timeout, and the server then answers a whole request."""
+    import socket
+    import time
+    import urllib.request
+
+    srv = _explorer(monkeypatch)
+    assert srv.request_queue_size >= 128
+    port = srv.server_address[1]
+    socks = []
+    try:
+        for _ in range(4):
+            s = socket.create_connection(("127.0.0.1", port), timeout=60)
+            s.sendall(b"GET /api/steady?h=0.1 HTTP/1.1\r\nHost: x")  # never finished
+            socks.append(s)
+        t = time.monotonic()
+        while _pool_threads() < 2 and time.monotonic() - t < 60:
+            time.sleep(0.01)
+        assert _pool_threads() <= 2
+        for s in socks:  # each is let go by the server: end of stream, or a reset
+            try:
+                assert s.recv(1024) == b""
+            except ConnectionResetError:
+                pass
+        assert _pool_threads() <= 2
+        with urllib.request.urlopen(f"http://127.0.0.1:{port}/explore.css",
+                                    timeout=60) as r:
+            assert r.status == 200
+    finally:
+        for s in socks:
+            s.close()
+        srv.shutdown()
+        srv.server_close()
+
+
+def test_a_client_that_leaves_early_puts_no_traceback_in_the_log(monkeypatch, capsys):
+    srv = _explorer(monkeypatch)
+    try:
+        for exc in (BrokenPipeError(32, "Broken pipe"), ConnectionResetError(104, "reset")):
+            try:
+                raise exc
+            except OSError:
+                srv.handle_error(None, ("127.0.0.1", 5))
+        assert capsys.readouterr().err == ""
+        try:
+            raise RuntimeError("a bug")
+        except RuntimeError:
+            srv.handle_error(None, ("127.0.0.1", 5))
+        assert "RuntimeError: a bug" in capsys.readouterr().err
+    finally:
+        srv.shutdown()
+        srv.server_close()

@@ -10,8 +10,12 @@ server, out of ``rollingdisk/explore/static``.
 
 Every request is answered: a bad query is HTTP 400 with ``{"error": "<one line>"}``, a bug
 in rollingdisk is HTTP 500 with ``{"error": ...}`` (the traceback goes to the server's
-log, never to the page), and the server goes on serving.  Each request runs in its own
-thread; the work per request is bounded by :mod:`.api`.
+log, never to the page), and the server goes on serving.  Under load: each connection is
+served by a thread of a bounded pool (:data:`MAX_THREADS`; further connections wait in
+the listen queue of :data:`LISTEN_BACKLOG`), a connection that sends nothing for
+:data:`IDLE_TIMEOUT` seconds (a half-sent request) is closed, and a client that leaves
+before its answer is written is no error (nothing in the log); the work per request is
+bounded by :mod:`.api`.
 """
 
 from __future__ import annotations
@@ -44,6 +48,14 @@ ENDPOINTS = {"/api/map": api.map_payload, "/api/steady": api.steady_payload,
 
 #: Longest query string accepted (characters).
 MAX_QUERY = 2000
+#: Connections served at once (a thread each); more wait in the listen queue.
+MAX_THREADS = 32
+#: Connections the kernel queues before they are accepted (the listen backlog).
+LISTEN_BACKLOG = 128
+#: Seconds a connection may stay silent (a request half sent, an idle keep-alive).
+IDLE_TIMEOUT = 10.0
+#: What a client that left early raises in the writer: not an error of the server.
+_CLIENT_GONE = (BrokenPipeError, ConnectionResetError, ConnectionAbortedError, TimeoutError)
 
 
 def _static(name: str) -> bytes:
@@ -54,6 +66,7 @@ class _Handler(BaseHTTPRequestHandler):
     server: ExplorerServer
     server_version = "rollingdisk-explore"
     protocol_version = "HTTP/1.1"
+    timeout = IDLE_TIMEOUT  # on the socket: a silent client is let go
 
     def log_message(self, format, *args):  # noqa: A002 - BaseHTTPRequestHandler API
         if self.server.verbose:
@@ -128,16 +141,45 @@ class ExplorerServer(ThreadingHTTPServer):
 
     daemon_threads = True
     allow_reuse_address = True
+    request_queue_size = LISTEN_BACKLOG
 
     def __init__(self, address, *, h: float, ground: str, verbose: bool = False):
         self.defaults = {"h": h, "ground": ground}
         self.verbose = verbose
+        self._slots = threading.BoundedSemaphore(MAX_THREADS)
         host = address[0]
         if ":" in host:
             import socket
 
             self.address_family = socket.AF_INET6
         super().__init__(address, _Handler)
+
+    def process_request(self, request, client_address):
+        """Serve the connection in a thread of the pool: wait for a free one (the next
+        connections wait in the listen queue meanwhile)."""
+        self._slots.acquire()
+        try:
+            super().process_request(request, client_address)
+        except BaseException:
+            self._slots.release()
+            raise
+
+    def process_request_thread(self, request, client_address):
+        try:
+            super().process_request_thread(request, client_address)
+        finally:
+            self._slots.release()
+
+    def handle_error(self, request, client_address):
+        """A client that left early (a broken pipe, a reset, its idle time out) is logged
+        only when verbose, without a traceback; anything else is a bug: its traceback."""
+        exc = sys.exc_info()[1]
+        if isinstance(exc, _CLIENT_GONE):
+            if self.verbose:
+                print(f"rollingdisk explore: {client_address[0]} left "
+                      f"({type(exc).__name__})", file=sys.stderr, flush=True)
+            return
+        super().handle_error(request, client_address)
 
     @property
     def url(self) -> str:
