@@ -376,3 +376,54 @@ def test_a_client_that_leaves_early_puts_no_traceback_in_the_log(monkeypatch, ca
     finally:
         srv.shutdown()
         srv.server_close()
+
+
+# ------------------------------------------------- item 8: no stray numeric warnings
+@pytest.mark.filterwarnings("error")
+@pytest.mark.parametrize("extra, status, says", [
+    (["--alpha0", "1.5707"], "completed", "RuntimeWarning: invalid value encountered in sqrt"),
+    (["--creep", "1e9"], "failed", "UserWarning: lsoda: Repeated convergence failures"),
+])
+def test_euler_disk_on_extreme_values_says_its_warnings_in_the_result(capsys, extra, status,
+                                                                       says):
+    """Extreme but accepted values made numpy (euler_disk.py) and LSODA print warnings
+    beside exit 0; the result now carries them ("warnings") and nothing is printed."""
+    import json
+
+    assert main(["euler-disk", *extra, "--quiet", "--json"]) == 0
+    captured = capsys.readouterr()
+    assert captured.err == ""
+    rec = json.loads(captured.out)
+    assert rec["status"] == status
+    assert any(w.startswith(says) for w in rec["warnings"]), rec["warnings"]
+
+
+@pytest.mark.filterwarnings("error")
+def test_an_overflowing_uncompiled_run_fails_without_warnings(capsys):
+    """omega3 = 1e150 on rough ground: the uncompiled DOP853 (pycore) warned of numpy's
+    overflow before its status said the run failed; as compiled code, it now only fails."""
+    import json
+
+    assert main(["simulate", "--h", "0.1", "--ground", "rough", "--state",
+                 "theta=0.3,omega3=1e150", "--t-end", "1", "--json"]) == 0
+    captured = capsys.readouterr()
+    assert captured.err == ""
+    rec = json.loads(captured.out)
+    assert rec["status"] == "failed" and "warnings" not in rec
+
+
+def test_numeric_warnings_are_collected_once_and_others_left_alone():
+    import warnings
+
+    import numpy as np
+
+    from rollingdisk.cli._format import numeric_warnings
+
+    with warnings.catch_warnings(record=True) as outside:
+        warnings.simplefilter("always")
+        with numeric_warnings() as caught:
+            for _ in range(3):
+                np.sqrt(np.float64(-1.0))
+            warnings.warn("old name", DeprecationWarning, stacklevel=1)
+    assert caught.lines == ["RuntimeWarning: invalid value encountered in sqrt"]
+    assert [w.category for w in outside] == [DeprecationWarning]

@@ -6,7 +6,38 @@ from __future__ import annotations
 import math
 
 __all__ = ["finite_or_none", "print_record", "agg", "has_scale", "disk_fields", "with_si",
-           "si_text", "disk_line", "progress_bar"]
+           "si_text", "disk_line", "progress_bar", "numeric_warnings"]
+
+
+class numeric_warnings:  # noqa: N801 - used as a context manager, like catch_warnings
+    """Collect the numeric warnings of a run (``RuntimeWarning``, ``UserWarning`` and their
+    kind: numpy's overflow, scipy's LSODA and quad) instead of letting them print, so that
+    the result says what happened: :attr:`lines`, one per distinct warning, go into the
+    record as ``"warnings"``.  Other warnings are left to the filters in force."""
+
+    def __enter__(self):
+        import warnings
+
+        self.lines: list[str] = []
+        self._catch = warnings.catch_warnings()
+        self._catch.__enter__()
+        show = warnings.showwarning
+
+        def record(message, category, filename, lineno, file=None, line=None):
+            if issubclass(category, (RuntimeWarning, UserWarning)):
+                text = f"{category.__name__}: {' '.join(str(message).split())}"
+                if text not in self.lines:
+                    self.lines.append(text)
+            else:
+                show(message, category, filename, lineno, file, line)
+
+        warnings.showwarning = record
+        for kind in (RuntimeWarning, UserWarning):
+            warnings.simplefilter("always", kind)
+        return self
+
+    def __exit__(self, *exc):
+        return self._catch.__exit__(*exc)
 
 
 def finite_or_none(value):

@@ -24,7 +24,7 @@ from rollingdisk.cli._args import (
     real,
     resolve_length,
 )
-from rollingdisk.cli._format import disk_line, with_si
+from rollingdisk.cli._format import disk_line, numeric_warnings, with_si
 
 
 def configure(sub):
@@ -135,11 +135,14 @@ def run(args) -> int:
         check_writable(args.sound, name="--sound")  # before the work
     bar = ProgressBar(quiet=args.quiet)
     try:
-        result = run_euler_disk(toy, max_steps=max_steps, max_wall_time=max_wall_time,
-                                progress=bar)
+        with numeric_warnings() as caught:  # said in the result, not printed
+            result = run_euler_disk(toy, max_steps=max_steps, max_wall_time=max_wall_time,
+                                    progress=bar)
+            summary = _with_si(result.summary(), result.toy.disk)
     finally:
         bar.close()
-    summary = _with_si(result.summary(), result.toy.disk)
+    if caught.lines:
+        summary["warnings"] = caught.lines
     if args.out is not None:
         write_euler_disk(result, args.out)
         summary["out"] = args.out
@@ -150,7 +153,10 @@ def run(args) -> int:
     if args.json:
         print(json.dumps(summary, indent=2, allow_nan=False))
         return 0
-    _print(result)
+    with numeric_warnings():  # NaN fields print as nan
+        _print(result)
+    for line in caught.lines:
+        print(f"  warning        {line}")
     if args.out is not None:
         print(f"  wrote {args.out}")
     if args.sound is not None:

@@ -36,6 +36,7 @@ from rollingdisk.cli._format import (
     disk_line,
     finite_or_none,
     has_scale,
+    numeric_warnings,
     print_record,
     progress_bar,
     with_si,
@@ -135,18 +136,21 @@ def run(args) -> int:
     motion = start_from_args(args, "simulate")
     if args.out is not None:
         check_writable(args.out, name="--out")
-    if coulomb is not None and args.until_rest:
-        record, transitions = run_until_rest(args, disk, coulomb, motion)
-        keys = ("t_end", "n_impacts", "energy_balance", "impact_loss", "dissipated_total",
-                "wall_time_s")
-    elif coulomb is not None:
-        record, transitions = run_coulomb(args, disk, coulomb, motion)
-        keys = ("t_end", "n_steps", "mode_end", "energy_balance", "theta_min", "theta_max",
-                "wall_time_s")
-    else:
-        record, transitions = _run_ideal(args, disk, motion), []
-        keys = ("t_end", "n_steps", "energy_drift", "theta_min", "theta_max",
-                "theta_frequency", "varpi", "growth_rate", "wall_time_s")
+    with numeric_warnings() as caught:  # said in the result, not printed
+        if coulomb is not None and args.until_rest:
+            record, transitions = run_until_rest(args, disk, coulomb, motion)
+            keys = ("t_end", "n_impacts", "energy_balance", "impact_loss",
+                    "dissipated_total", "wall_time_s")
+        elif coulomb is not None:
+            record, transitions = run_coulomb(args, disk, coulomb, motion)
+            keys = ("t_end", "n_steps", "mode_end", "energy_balance", "theta_min",
+                    "theta_max", "wall_time_s")
+        else:
+            record, transitions = _run_ideal(args, disk, motion), []
+            keys = ("t_end", "n_steps", "energy_drift", "theta_min", "theta_max",
+                    "theta_frequency", "varpi", "growth_rate", "wall_time_s")
+    if caught.lines:
+        record["warnings"] = caught.lines
     if has_scale(disk):
         record = _with_si(record, disk)
         transitions = record.get("transitions", transitions)
@@ -159,6 +163,8 @@ def run(args) -> int:
     if has_scale(disk):
         print(f"  {disk_line(disk)}")
     print_record(record, keys)
+    for line in record.get("warnings", ()):
+        print(f"  warning          {line}")
     for x in transitions[:20]:
         when = f" ({x['t_si']:.6g} s)" if x.get("t_si") is not None else ""
         print(f"  t = {x['t']:.10g}{when}: {x['from']} -> {x['to']}")

@@ -143,9 +143,11 @@ def integrate(*args):
     """``_dop853.integrate`` uncompiled.  Python's ``math`` raises where IEEE arithmetic
     (numba, numpy) gives inf or nan (``math.sin(inf)``, a float divided by 0): then the
     chunk is run again from its start with numpy scalars, which behave as compiled code
-    (its inputs are not modified, so it takes the same steps)."""
+    (its inputs are not modified, so it takes the same steps).  numpy's warnings are off
+    in both: an overflow is reported by the run's status, as a compiled run's is."""
     try:
-        return _integrate_fast(*args)
+        with np.errstate(all="ignore"):  # as compiled code: IEEE, no warnings (the run's
+            return _integrate_fast(*args)  # status says what overflowed)
     except (ValueError, ArithmeticError):
         with np.errstate(all="ignore"):
             return _integrate_ieee(*args)
