@@ -265,3 +265,24 @@ def test_writers_started_together_never_tear_the_file(tmp_path):
             assert len(err.strip().splitlines()) == 1 and "pid" in err, err
     assert any(p.returncode == 0 for p, _, _ in results)
     _check_whole(path, 300)
+
+
+def test_a_long_ensemble_shows_progress_on_a_terminal_only(fake, capsys, monkeypatch):
+    """``toss --n 1000000`` printed nothing until the end: on a terminal a progress line
+    is drawn (never with --json or into a pipe)."""
+    from rollingdisk.util import progress
+
+    made = []
+
+    class Bar(progress.ProgressBar):
+        def __init__(self, *a, **kw):
+            super().__init__(*a, **{**kw, "delay": 0.0, "interval": 0.0})
+            made.append(self)
+
+    monkeypatch.setattr(progress, "ProgressBar", Bar)
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True, raising=False)
+    assert main(["toss", "--h", "0.1", "--n", "5"]) == 0
+    err = capsys.readouterr().err
+    assert "tossing [" in err and "5/5" in err and not made[-1].quiet
+    assert main(["toss", "--h", "0.1", "--n", "5", "--json"]) == 0
+    assert "tossing" not in capsys.readouterr().err and made[-1].quiet
