@@ -54,6 +54,7 @@ from functools import cached_property
 
 import numpy as np
 
+from rollingdisk.engine.methods import check_method
 from rollingdisk.ivp import fastsegment as _fs
 from rollingdisk.ivp.simulation import _check_state
 from rollingdisk.model import coulomb as _cl
@@ -285,7 +286,7 @@ def _DOP853():
 
 
 def _LSODA():
-    """scipy's LSODA class (``method="stiff"``), imported when such a run starts."""
+    """scipy's LSODA class (``method="lsoda"``), imported when such a run starts."""
     from scipy.integrate import LSODA
 
     return LSODA
@@ -338,7 +339,7 @@ CHUNK = 1024
 #: Seconds of wall clock between two calls of ``progress`` at most (while the run steps).
 REPORT_EVERY = 0.5
 _py_seconds = 0.0
-METHODS = ("auto", "compiled", "scipy", "stiff")
+METHODS = ("auto", "dop853", "scipy", "lsoda")
 
 
 def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *,
@@ -393,19 +394,21 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     progress : callable, optional
         ``progress(fraction)`` with the fraction of ``t_span`` done, called about every
         percent of it and at least every :data:`REPORT_EVERY` seconds.
-    method : {"auto", "compiled", "scipy", "stiff"}
-        ``"scipy"``: scipy's DOP853 driven from Python.  ``"stiff"``: scipy's LSODA (it
+    method : {"auto", "dop853", "scipy", "lsoda"}
+        The words of :mod:`rollingdisk.engine.methods` (``"compiled"`` and ``"stiff"``, the
+        old spellings of ``"dop853"`` and ``"lsoda"``, warn).
+        ``"scipy"``: scipy's DOP853 driven from Python.  ``"lsoda"``: scipy's LSODA (it
         switches to BDF where the problem is stiff) driven from Python, events located the
         same way on its interpolant: for long micro-slip at the edge of the friction cone,
         where the slip's direction relaxes at a rate of order ``mu g/|u|`` and DOP853 needs
         about 1e5 steps per time unit (an Euler's disk run to its fall: 32,680 LSODA steps
         in 13 s against 4,964,713 compiled DOP853 steps in 65 s, docs/friction.md).
-        ``"compiled"``: the steps without events in the compiled loop of
+        ``"dop853"``: the steps without events in the compiled loop of
         :mod:`rollingdisk.ivp.fastsegment` (numba; 20-50 times as fast; compiled once
         per machine, about 7 s, then loaded from numba's cache in 0.4 s).  ``"auto"``
         (default): scipy until the process has spent :data:`PY_BUDGET` seconds on
         scipy-path Coulomb steps, then compiled (at once if the compiled loop is loaded
-        already) where numba is installed.  ``"scipy"`` and ``"compiled"`` take the same
+        already) where numba is installed.  ``"scipy"`` and ``"dop853"`` take the same
         steps and locate events the same way: transitions agree to about 1e-10.
 
     Returns
@@ -413,8 +416,9 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     Trajectory
         With ``ground`` the :class:`Coulomb` value, ``mode`` per stored point,
         ``transitions`` and ``dissipated`` (see :class:`Trajectory`); ``method`` is
-        ``"dop853"`` if the compiled loop took steps, ``"lsoda-scipy"`` with ``"stiff"``,
-        else ``"dop853-scipy"``.
+        ``"dop853"`` if the compiled loop took steps (with ``"auto"``, scipy's DOP853 may
+        have taken the first ones: the two take the same steps), ``"lsoda"`` with
+        ``"lsoda"``, else ``"scipy"``.
 
     Examples
     --------
@@ -426,10 +430,9 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         disk, ground, t_span, y0, rtol=rtol, atol=atol, max_step=max_step,
         max_steps=max_steps, max_transitions=max_transitions, max_wall_time=max_wall_time,
         max_points=max_points, slip_tol=slip_tol, alpha_min=alpha_min)
-    if method not in METHODS:
-        raise ParameterError(f"method must be one of {METHODS}, got {method!r}")
-    if method == "compiled" and not _fs.available():
-        raise ParameterError("method='compiled' needs numba (pip install numba)")
+    method = check_method(method, METHODS)
+    if method == "dop853" and not _fs.available():
+        raise ParameterError("method='dop853' needs numba (pip install numba)")
     hybrid = _Hybrid(disk, ground, t0, t1, y, options, guards, progress, method)
     hybrid.integrate()
     return hybrid.trajectory()
@@ -514,7 +517,7 @@ class _Hybrid:
     def __init__(self, disk, ground, t0, t1, y, options, guards, progress, method="scipy"):
         self.disk, self.ground, self.h = disk, ground, disk.h
         self.method = method
-        self.compiled = method == "compiled" or (method == "auto" and _fs.loaded())
+        self.compiled = method == "dop853" or (method == "auto" and _fs.loaded())
         self.used_compiled = False
         self.t0, self.t1 = t0, t1
         self.o = options
@@ -630,7 +633,7 @@ class _Hybrid:
         run.side = 1.0 if self.z[5] >= 0 else -1.0
         if self.compiled:
             return self._segment_compiled(0.0)
-        stiff = self.method == "stiff"
+        stiff = self.method == "lsoda"
         solver = (_LSODA() if stiff else _DOP853())(
             run.rhs(self.mode), self.t, self.z, self.t1, rtol=o["rtol"], atol=o["atol"],
             max_step=o["max_step"])
@@ -999,8 +1002,8 @@ class _Hybrid:
             disk=self.disk, ground=self.ground, t=np.array(self.points.t), y=Z[:10],
             status=self.status, message=self.message, n_steps=self.n_steps,
             n_rhs=self.run.n_rhs,
-            method=("dop853" if self.used_compiled else "lsoda-scipy"
-                    if self.method == "stiff" else "dop853-scipy"),
+            method=("dop853" if self.used_compiled else "lsoda"
+                    if self.method == "lsoda" else "scipy"),
             t_event=self.t_event,
             wall_time=wall, mode=np.array(self.points.mode),
             transitions=tuple(self.transitions),

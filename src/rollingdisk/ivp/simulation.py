@@ -26,6 +26,7 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
+from rollingdisk.engine.methods import check_method
 from rollingdisk.model import events as _ev
 from rollingdisk.model.disk import Disk, check_ground
 from rollingdisk.model.equations import _check_disk, energy, equations_of_motion
@@ -208,6 +209,7 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
         :data:`~rollingdisk.model.state.SMOOTH_STATE`; finite, ``|theta| < pi/2`` and
         ``theta != 0`` if ``h > 0``, energy and rates of change finite.
     method : {"auto", "dop853", "taylor", "scipy"}
+        The words of :mod:`rollingdisk.engine.methods`.
         ``"auto"`` (default): the fastest method the process has for the tolerance at
         equal accuracy (:func:`rollingdisk.engine.jit.auto_method`; docs/simulation.md
         has the measured table): ``"scipy"`` with user ``events``, ``"dop853"`` with
@@ -297,8 +299,7 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
     if isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer)) \
             or max_steps < 1:
         raise ParameterError(f"max_steps must be an integer >= 1, got {max_steps!r}")
-    if method not in _METHODS:
-        raise ParameterError(f"method must be one of {_METHODS}, got {method!r}")
+    method = check_method(method, _METHODS)
     if error_control not in _ERROR_CONTROL:
         raise ParameterError(f"error_control must be one of {_ERROR_CONTROL}, got "
                              f"{error_control!r}")
