@@ -324,12 +324,14 @@ DEFAULT_MAX_WALL_TIME = 60.0
 #: Stored points beyond which every other regular step is dropped (memory: about 250 bytes
 #: a point); above the default step budget, so a run within it keeps every step.
 DEFAULT_MAX_POINTS = 500_000
-#: ``method="auto"``: seconds of scipy-path stepping, over all Coulomb runs of the process,
-#: after which the compiled loop (:mod:`rollingdisk.ivp.fastsegment`) is loaded (0.4 s
-#: from numba's on-disk cache, about 7 s to compile it the first time on a machine) and
-#: every later step is compiled (the run under way switches at its next check, with the
-#: step size it would have tried next).  A short script never imports numba.
-PY_BUDGET = 0.5
+#: ``method="auto"``: scipy-path steps, over all Coulomb runs of the process, after which
+#: the compiled loop (:mod:`rollingdisk.ivp.fastsegment`) is loaded (0.4 s from numba's
+#: on-disk cache, about 7 s to compile it the first time on a machine, announced on a
+#: terminal) and every later step is compiled (the run under way switches at its next
+#: check, every 64 steps, with the step size it would have tried next).  Counted in steps,
+#: not seconds, so that a run switches at the same step on every machine and under any
+#: load (about half a second of scipy-path stepping).  A short script never imports numba.
+PY_BUDGET = 2_000
 #: ``method="auto"`` compiles on a cold cache only when the run has at least this many
 #: seconds of its wall-clock budget left (so ``max_wall_time`` still bounds it).
 COMPILE_ROOM = 30.0
@@ -338,7 +340,7 @@ CHUNK = 1024
 
 #: Seconds of wall clock between two calls of ``progress`` at most (while the run steps).
 REPORT_EVERY = 0.5
-_py_seconds = 0.0
+_py_steps = 0
 METHODS = ("auto", "dop853", "scipy", "lsoda")
 
 
@@ -406,8 +408,8 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         ``"dop853"``: the steps without events in the compiled loop of
         :mod:`rollingdisk.ivp.fastsegment` (numba; 20-50 times as fast; compiled once
         per machine, about 7 s, then loaded from numba's cache in 0.4 s).  ``"auto"``
-        (default): scipy until the process has spent :data:`PY_BUDGET` seconds on
-        scipy-path Coulomb steps, then compiled (at once if the compiled loop is loaded
+        (default): scipy until the process has taken :data:`PY_BUDGET` scipy-path
+        Coulomb steps, then compiled (at once if the compiled loop is loaded
         already) where numba is installed.  ``"scipy"`` and ``"dop853"`` take the same
         steps and locate events the same way: transitions agree to about 1e-10.
 
@@ -638,7 +640,6 @@ class _Hybrid:
             run.rhs(self.mode), self.t, self.z, self.t1, rtol=o["rtol"], atol=o["atol"],
             max_step=o["max_step"])
         g_old = run.events(self.mode, self.z)
-        clock = time.perf_counter()
         n_here = 0
         try:
             while solver.status == "running":
@@ -662,28 +663,30 @@ class _Hybrid:
                 g_old = self._accept(solver)
                 n_here += 1
                 if self.method == "auto" and n_here % 64 == 0:
-                    now = time.perf_counter()
-                    _spend(now - clock)
-                    clock = now
+                    _spend(64)
                     if self._switch():
                         return self._segment_compiled(solver.h_abs)
             return False
         finally:
-            _spend(time.perf_counter() - clock)
+            _spend(n_here % 64)
 
     def _switch(self):
-        """``method="auto"``: whether to go on compiled now (the process has spent
-        :data:`PY_BUDGET` s on the scipy path, numba is there, and a cold cache leaves
+        """``method="auto"``: whether to go on compiled now (the process has taken
+        :data:`PY_BUDGET` steps on the scipy path, numba is there, and a cold cache leaves
         :data:`COMPILE_ROOM` s of the wall budget); loads the compiled loop."""
         global _compile_failed
         if self.compiled:
             return True
-        if _compile_failed or _py_seconds < PY_BUDGET or not _fs.available():
+        if _compile_failed or _py_steps < PY_BUDGET or not _fs.available():
             return False
         if not _fs.loaded() and not _fs.cache_ready():
             left = self.o["max_wall_time"] - (time.perf_counter() - self.wall0)
             if left < COMPILE_ROOM:
                 return False
+        if not _fs.loaded() and not _fs.cache_ready():
+            from rollingdisk.engine.compile import announce
+
+            announce("compiling rollingdisk's Coulomb loop (once per machine; usually 10-60 s)")
         try:
             _fs.compiled()
         except Exception:  # noqa: BLE001 - numba broken: stay on the scipy path
@@ -1013,10 +1016,10 @@ class _Hybrid:
 _compile_failed = False
 
 
-def _spend(seconds):
-    """Count ``seconds`` of scipy-path stepping against :data:`PY_BUDGET`."""
-    global _py_seconds
-    _py_seconds += max(0.0, seconds)
+def _spend(steps):
+    """Count ``steps`` scipy-path steps against :data:`PY_BUDGET`."""
+    global _py_steps
+    _py_steps += max(0, int(steps))
 
 
 class _DenseStep:

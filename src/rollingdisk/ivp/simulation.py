@@ -218,12 +218,13 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
         larger than DOP853's at the tolerance asked for), which starts as
         uncompiled DOP853 while the process has no compiled code (``traj.method`` then
         says ``"dop853"`` or ``"dop853+taylor"``).
-        ``"dop853"``: rollingdisk's DOP853, uncompiled until the process has spent
-        ``rollingdisk.engine.jit.PY_BUDGET`` (0.4) s uncompiled over all its runs, then
-        compiled (numba); the same steps either way.  ``"taylor"``: a compiled
+        ``"dop853"``: rollingdisk's DOP853, uncompiled until the work is worth the
+        compiled code (:mod:`rollingdisk.engine.jit`: counted in steps, so the same run
+        takes the same path on every machine), then compiled (numba); the same steps
+        either way.  ``"taylor"``: a compiled
         Taylor-series method of order ``ceil(-ln(tol)/2) + 1``
-        (:mod:`rollingdisk.engine.taylor`; fewer, longer steps, 2-10 times as fast as
-        DOP853 at equal energy drift; compiled on first use, no ``dense_output``, no
+        (:mod:`rollingdisk.engine.taylor`; fewer, longer steps than DOP853 at equal energy
+        drift; compiled on first use, no ``dense_output``, no
         ``first_step``; ``n_rhs`` counts its series, one per step).
         ``"scipy"``: scipy's ``DOP853`` stepped on the numpy right-hand side.
     rtol : float
