@@ -21,6 +21,15 @@ this machine with a toy loop, ``NUMBA_CACHE_DIR`` in a fresh folder, two process
   Chosen.  numba documents first-class functions as experimental; the tests of
   ``tests/test_engine_contract.py`` run every model both ways and compare.
 
+The real loop, measured the same way on a machine shared at a load average of 9-11 on 2
+cores (so every number is several times what an idle machine gives): compiling it with an
+empty cache took 58 s; in a fresh process ``import numba`` took 0.9-1.1 s and loading the
+loop from the cache 0.7-1.1 s, a model's three functions 0.02-0.04 s.  A step cost 3.5 us
+on a one-component model without events (14 right-hand sides) and 17 us on the pendulum of
+the tests with two events sampled in every step and about one located per step (the
+uncompiled loop: 1.6-1.9 ms a step), the ball, pendulum and a quadrature took the same
+steps to the last bit both ways.
+
 The loop and its helpers are the plain functions of :mod:`rollingdisk.engine.steploop`,
 :mod:`rollingdisk.engine.dop853` and :mod:`rollingdisk.engine.roots`, made callable from
 compiled code by ``numba.extending.register_jitable`` (which leaves the Python functions
@@ -29,6 +38,11 @@ numba keys a cached function by its own file alone; the loop is named after the 
 every source of ``engine/`` and ``model/`` (:func:`rollingdisk.engine.compile.source_key`),
 and a model's function after the hash of its own module and its helpers' modules, so that
 an edited callee never meets a stale cache entry.
+
+Everything is compiled with numpy's error model: a float divided by 0 gives inf or nan
+(the uncompiled loop, which computes on numpy's float64 scalars, does the same) instead of
+raising; the Illinois step then falls back to bisection (:func:`.roots._illinois_trial`)
+and a non-finite step is rejected.
 """
 
 from __future__ import annotations
@@ -97,7 +111,8 @@ def loop():
     if _loop is None:
         _register(_HELPERS)
         key = source_key(_model_pkg, _engine_pkg)
-        _loop = numba.njit(_LOOP_ARGS, cache=True)(_renamed(_loopsrc.integrate, key))
+        _loop = numba.njit(_LOOP_ARGS, cache=True, error_model="numpy")(
+            _renamed(_loopsrc.integrate, key))
     return _loop
 
 
@@ -117,7 +132,7 @@ def compile_function(f, signature, helpers=()):
         mods = {sys.modules[g.__module__] for g in (f, *helpers)
                 if getattr(sys.modules.get(g.__module__), "__file__", None)}
         key = source_key(*sorted(mods, key=lambda m: m.__name__)) if mods else ""
-        d = numba.njit(signature, cache=True)(_renamed(f, key) if key else f)
+        d = numba.njit(signature, cache=True, error_model="numpy")(_renamed(f, key) if key else f)
     _functions[memo] = (f, d)  # f kept alive: its id is the memo's key
     return d
 
