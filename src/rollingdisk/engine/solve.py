@@ -97,7 +97,9 @@ def solve(model: Model, t_span, y0, p=(), *, rtol: float = 1e-10, atol=1e-12,
     else:
         loop = integrate
         funcs = (model.rhs, model.events, model.impact)
-    ts, ys, ev_t, ev_k, ev_y, ev_yp, status, end_event, n_steps, n_rhs = loop(*funcs, *args)
+    with np.errstate(all="ignore"):  # IEEE arithmetic, as compiled (numpy's error model)
+        ts, ys, ev_t, ev_k, ev_y, ev_yp, status, end_event, n_steps, n_rhs = loop(*funcs,
+                                                                                  *args)
     e_before = np.full(ev_t.shape[0], np.nan)
     e_after = np.full(ev_t.shape[0], np.nan)
     if model.energy is not None:
