@@ -285,3 +285,37 @@ def test_bad_models_and_arguments_are_named():
         solve(OSC, (0.0, 1.0), [1.0, 0.0], [], atol=-1.0)
     with pytest.raises(ParameterTypeError, match="model"):
         solve("ball", (0.0, 1.0), [1.0, 0.0], [])
+
+
+def _drive(w, t):
+    """A plain helper a model's right-hand side calls by its global name."""
+    return math.cos(w * t)
+
+
+def helped_rhs(t, y, p, out):
+    out[0] = _drive(p[0], t)
+
+
+HELPED = Model("driven quadrature, with a helper", ("y",), helped_rhs, helpers=(_drive,))
+
+
+@pytest.mark.parametrize("compiled", PATHS)
+def test_a_model_calls_its_helpers_on_both_paths(compiled):
+    a = solve(HELPED, (0.0, 5.0), [0.0], [3.0], rtol=1e-12, atol=1e-12, compiled=compiled)
+    b = solve(DRIVEN, (0.0, 5.0), [0.0], [3.0], rtol=1e-12, atol=1e-12, compiled=compiled)
+    np.testing.assert_array_equal(a.t, b.t)
+    np.testing.assert_array_equal(a.y, b.y)
+
+
+def test_a_numba_function_is_taken_as_it_is():
+    import numba
+
+    from rollingdisk.engine.steploop_numba import RHS_SIGNATURE
+
+    jitted = numba.njit(RHS_SIGNATURE)(osc_rhs)
+    model = Model("oscillator, jitted", ("x", "v"), jitted)
+    sol = solve(model, (0.0, 3.0), [1.0, 0.0], [], rtol=1e-12, atol=1e-12, compiled=True)
+    np.testing.assert_allclose(sol.y[:, 0], np.cos(sol.t), rtol=0, atol=TOL)
+    wrong = numba.njit("void(float64, float64[::1], float64[::1])")(lambda t, y, out: None)
+    with pytest.raises(ParameterError, match="engine calls it as"):
+        solve(Model("wrong", ("x",), wrong), (0.0, 1.0), [0.0], [], compiled=True)

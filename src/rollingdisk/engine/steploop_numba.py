@@ -60,6 +60,7 @@ from rollingdisk.engine import dop853 as _dop
 from rollingdisk.engine import roots as _roots
 from rollingdisk.engine import steploop as _loopsrc
 from rollingdisk.engine.compile import source_key
+from rollingdisk.util.errors import ParameterError
 
 __all__ = ["RHS_SIGNATURE", "EVENTS_SIGNATURE", "IMPACT_SIGNATURE", "loop",
            "model_functions", "compile_function"]
@@ -119,13 +120,19 @@ def loop():
 def compile_function(f, signature, helpers=()):
     """``f`` compiled with ``signature`` (cached on disk), its ``helpers`` compiled into it.
 
-    A numba dispatcher is compiled for ``signature`` and returned as it is.
+    A numba dispatcher is compiled for ``signature`` (if it is not already) and returned
+    as it is; one whose signatures are fixed to others raises :class:`ParameterError`.
     """
     memo = (id(f), str(signature))
     if memo in _functions:
         return _functions[memo][1]
     if isinstance(f, numba.core.dispatcher.Dispatcher):
-        f.compile(signature)
+        if tuple(signature.args) not in [tuple(a) for a in f.signatures]:
+            try:
+                f.compile(signature)
+            except RuntimeError:  # numba: "compilation disabled" (its signatures fixed)
+                raise ParameterError(f"{f.__name__}: compiled for {f.signatures}, the "
+                                     f"engine calls it as {signature}") from None
         d = f
     else:
         _register(helpers)
