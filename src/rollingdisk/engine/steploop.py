@@ -8,10 +8,10 @@ the arguments, picks the path and returns a frozen
 :class:`~rollingdisk.engine.contract.Solution`.
 
 The method is DOP853 with the arithmetic of :mod:`rollingdisk.engine.dop853`: the stage
-sums, the error norm, the step-size factor, the dense output and its evaluation are that
-module's functions (``_combine``, ``_error_norm_v``, ``_step_factor``, ``_dense_tail``,
-``_dense_value``, ``_rms``) and its copy of Hairer's table
-(:mod:`rollingdisk.engine.dop853_coefficients`); only the three places that call the
+sums, the error norm, the step-size factor, the dense output and its evaluation and the
+output buffers are that module's functions (``_combine``, ``_error_norm_v``,
+``_step_factor``, ``_dense_tail``, ``_dense_value``, ``_rms``, ``_grow``) and its copy of
+Hairer's table (:mod:`rollingdisk.engine.dop853_coefficients`); only the three places that call the
 right-hand side (the stages, the extra stages of the dense output, the initial step) are
 written here, with the model's ``rhs`` as an argument.  Stage ``s`` is evaluated at time
 ``t + C[s] dt``, so a right-hand side may depend on ``t``.
@@ -47,6 +47,7 @@ from rollingdisk.engine.dop853 import (
     _dense_tail,
     _dense_value,
     _error_norm_v,
+    _grow,
     _rms,
     _step_factor,
 )
@@ -147,16 +148,6 @@ def _event_root(events, p, t, dt, y, F, k, xa, xb, ga, gb, ytmp, g):
         events(t + xc * dt, ytmp, p, g)
         xa, xb, ga, gb, flag = _illinois_update(xa, xb, ga, gb, xc, g[k], flag)
     return xa
-
-
-def _grow(ts, ys, m):
-    """Output arrays of twice the size, holding the first ``m`` rows."""
-    cap = 2 * ts.shape[0]
-    ts2 = np.empty(cap)
-    ys2 = np.empty((cap, ys.shape[1]))
-    ts2[:m] = ts[:m]
-    ys2[:m] = ys[:m]
-    return ts2, ys2
 
 
 def _grow_events(ev_t, ev_k, ev_y, ev_yp, m):
@@ -347,7 +338,7 @@ def integrate(rhs, events, impact, p, t0, y0, t_end, rtol, atolv, max_step, firs
                     if action[best] == RECORD:
                         continue
                     if m + 2 > ts.shape[0]:
-                        ts, ys = _grow(ts, ys, m)
+                        ts, ys, _cap = _grow(ts, ys, m)
                     ts[m] = t_e
                     ys[m] = y_e
                     m += 1
@@ -383,7 +374,7 @@ def integrate(rhs, events, impact, p, t0, y0, t_end, rtol, atolv, max_step, firs
                 status = FAILED
             continue
         if m == ts.shape[0]:
-            ts, ys = _grow(ts, ys, m)
+            ts, ys, _cap = _grow(ts, ys, m)
         ts[m] = t_new
         ys[m] = y_new
         m += 1

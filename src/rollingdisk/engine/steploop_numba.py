@@ -81,7 +81,7 @@ _LOOP_ARGS = (types.FunctionType(RHS_SIGNATURE), types.FunctionType(EVENTS_SIGNA
 _HELPERS = (_dop._combine, _dop._dense_tail, _dop._dense_value, _dop._error_norm_v,
             _dop._step_factor, _dop._rms, _roots._illinois_converged, _roots._illinois_trial,
             _roots._illinois_update, _loopsrc._stages, _loopsrc._dense, _loopsrc._first_step,
-            _loopsrc._crosses, _loopsrc._event_root, _loopsrc._grow, _loopsrc._grow_events)
+            _loopsrc._crosses, _loopsrc._event_root, _dop._grow, _loopsrc._grow_events)
 _registered: set = set()
 _loop = None
 _functions: dict = {}
