@@ -6,7 +6,8 @@ one DOP853 step loop, compiled and uncompiled, and their events, impacts and ene
 compared with exact solutions: the bounce times of a ball are a geometric series summing to
 the Zeno time, its apex heights fall as e^(2n); the pendulum's impact times are sums of
 complete elliptic integrals K(k) with k = e^n sin(theta0 / 2).  Both models run through the
-same compiled loop object: a new phase needs no new loop.
+same compiled loop object: a new phase needs no new loop.  The disk itself, plugged in the
+same way, takes the very steps of its own compiled DOP853.
 """
 
 import math
@@ -19,6 +20,7 @@ from scipy.special import ellipk
 
 from rollingdisk.engine.contract import CONTINUE, Model
 from rollingdisk.engine.solve import solve
+from rollingdisk.model.equations import _rough_omega_dot, _rough_rhs
 from rollingdisk.model.outcomes import AT_REST
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
@@ -319,3 +321,31 @@ def test_a_numba_function_is_taken_as_it_is():
     wrong = numba.njit("void(float64, float64[::1], float64[::1])")(lambda t, y, out: None)
     with pytest.raises(ParameterError, match="engine calls it as"):
         solve(Model("wrong", ("x",), wrong), (0.0, 1.0), [0.0], [], compiled=True)
+
+
+# ------------------------------------------------------------------ the disk, through it
+def disk_rhs(t, y, p, out):
+    from_kernel = _rough_rhs(p[0], y)
+    for i in range(8):
+        out[i] = from_kernel[i]
+
+
+def test_the_disk_takes_the_steps_of_its_own_compiled_dop853():
+    """Same arithmetic: the disk on rough ground (eqs. 1, 2, 10) through the contract takes
+    the very steps of the disk's compiled DOP853 (``engine/numba_core.py``, guards off),
+    to the last bit, compiled and uncompiled."""
+    from rollingdisk.engine import numba_core
+    from rollingdisk.model.geometry import _geometry, _inertia
+
+    disk = Model("disk on rough ground", ("X", "Y", "psi", "theta", "phi", "w1", "w2", "w3"),
+                 disk_rhs, helpers=(_rough_rhs, _rough_omega_dot, _inertia, _geometry))
+    h, t_end = 0.17, 5.0
+    y0 = np.array([0.0, 0.0, 0.0, 0.5, 0.0, 0.3, 1.1, 0.9])
+    ref = numba_core.integrate(True, h, 0.0, y0.copy(), t_end, np.inf, 1e-10,
+                               np.full(8, 1e-12), np.inf, 0.0, np.zeros(3, np.bool_), 1.0,
+                               np.empty(0), False, 10**6, 10**9, False)
+    for compiled in (True, False):
+        sol = solve(disk, (0.0, t_end), y0, [h], rtol=1e-10, atol=1e-12, compiled=compiled)
+        assert sol.n_steps == ref[2] and sol.n_rhs == ref[3]
+        np.testing.assert_array_equal(sol.t, ref[0])
+        np.testing.assert_array_equal(sol.y, ref[1])
