@@ -324,13 +324,11 @@ DEFAULT_MAX_WALL_TIME = 60.0
 #: Stored points beyond which every other regular step is dropped (memory: about 250 bytes
 #: a point); above the default step budget, so a run within it keeps every step.
 DEFAULT_MAX_POINTS = 500_000
-#: ``method="auto"``: scipy-path steps, over all Coulomb runs of the process, after which
-#: the compiled loop (:mod:`rollingdisk.ivp.fastsegment`) is loaded (0.4 s from numba's
-#: on-disk cache, about 7 s to compile it the first time on a machine, announced on a
-#: terminal) and every later step is compiled (the run under way switches at its next
-#: check, every 64 steps, with the step size it would have tried next).  Counted in steps,
-#: not seconds, so that a run switches at the same step on every machine and under any
-#: load (about half a second of scipy-path stepping).  A short script never imports numba.
+#: ``method="auto"``: scipy-path steps (about half a second), over all Coulomb runs of the
+#: process, after which the compiled loop (:mod:`rollingdisk.ivp.fastsegment`) is loaded
+#: (or compiled, announced on a terminal) and every later step is compiled; the run under
+#: way switches at its next check (every 64 steps) with the step size it would have tried
+#: next.  Steps, not seconds: the switch is at the same step on every machine.
 PY_BUDGET = 2_000
 #: ``method="auto"`` compiles on a cold cache only when the run has at least this many
 #: seconds of its wall-clock budget left (so ``max_wall_time`` still bounds it).
@@ -397,9 +395,7 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         ``progress(fraction)`` with the fraction of ``t_span`` done, called about every
         percent of it and at least every :data:`REPORT_EVERY` seconds.
     method : {"auto", "dop853", "scipy", "lsoda"}
-        The words of :mod:`rollingdisk.engine.methods` (``"compiled"`` and ``"stiff"``, the
-        old spellings of ``"dop853"`` and ``"lsoda"``, warn).
-        ``"scipy"``: scipy's DOP853 driven from Python.  ``"lsoda"``: scipy's LSODA (it
+        Words of :mod:`rollingdisk.engine.methods`.  ``"scipy"``: scipy's DOP853 driven from Python.  ``"lsoda"``: scipy's LSODA (it
         switches to BDF where the problem is stiff) driven from Python, events located the
         same way on its interpolant: for long micro-slip at the edge of the friction cone,
         where the slip's direction relaxes at a rate of order ``mu g/|u|`` and DOP853 needs
@@ -418,9 +414,8 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     Trajectory
         With ``ground`` the :class:`Coulomb` value, ``mode`` per stored point,
         ``transitions`` and ``dissipated`` (see :class:`Trajectory`); ``method`` is
-        ``"dop853"`` if the compiled loop took steps (with ``"auto"``, scipy's DOP853 may
-        have taken the first ones: the two take the same steps), ``"lsoda"`` with
-        ``"lsoda"``, else ``"scipy"``.
+        ``"dop853"`` if the compiled loop took steps (scipy's may have taken the first
+        ones), ``"lsoda"`` with ``"lsoda"``, else ``"scipy"``.
 
     Examples
     --------
