@@ -395,19 +395,17 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         ``progress(fraction)`` with the fraction of ``t_span`` done, called about every
         percent of it and at least every :data:`REPORT_EVERY` seconds.
     method : {"auto", "dop853", "scipy", "lsoda"}
-        Words of :mod:`rollingdisk.engine.methods`.  ``"scipy"``: scipy's DOP853 driven from Python.  ``"lsoda"``: scipy's LSODA (it
-        switches to BDF where the problem is stiff) driven from Python, events located the
-        same way on its interpolant: for long micro-slip at the edge of the friction cone,
-        where the slip's direction relaxes at a rate of order ``mu g/|u|`` and DOP853 needs
-        about 1e5 steps per time unit (an Euler's disk run to its fall: 32,680 LSODA steps
-        in 13 s against 4,964,713 compiled DOP853 steps in 65 s, docs/friction.md).
-        ``"dop853"``: the steps without events in the compiled loop of
-        :mod:`rollingdisk.ivp.fastsegment` (numba; 20-50 times as fast; compiled once
-        per machine, about 7 s, then loaded from numba's cache in 0.4 s).  ``"auto"``
-        (default): scipy until the process has taken :data:`PY_BUDGET` scipy-path
-        Coulomb steps, then compiled (at once if the compiled loop is loaded
-        already) where numba is installed.  ``"scipy"`` and ``"dop853"`` take the same
-        steps and locate events the same way: transitions agree to about 1e-10.
+        Words of :mod:`rollingdisk.engine.methods`.  ``"scipy"``: scipy's DOP853 driven
+        from Python.  ``"lsoda"``: scipy's LSODA (BDF where the problem is stiff) driven
+        from Python, events located the same way on its interpolant: for long micro-slip at
+        the edge of the friction cone, where the slip's direction relaxes at a rate of
+        order ``mu g/|u|`` and DOP853 needs about 1e5 steps per time unit (docs/friction.md
+        has the measurements).  ``"dop853"``: the steps without events in the compiled loop
+        of :mod:`rollingdisk.ivp.fastsegment` (numba, compiled once per machine).
+        ``"auto"`` (default): scipy for :data:`PY_BUDGET` steps of the process, then
+        compiled (at once if the loop is loaded) where numba is installed.  ``"scipy"`` and
+        ``"dop853"`` take the same steps and locate events the same way: transitions agree
+        to about 1e-10.
 
     Returns
     -------
