@@ -9,9 +9,9 @@ imported only when a plot function is called; every function takes ``ax=None`` (
 figure is made when it is ``None``), returns what it drew and never calls ``plt.show()``.
 
 One import path for every plot function, each kind of plot in a module of its own:
-the maps of steady motions (:mod:`.maps`), one trajectory (:mod:`.trajectory_plots`), a
-sweep's nonlinear runs (:mod:`.sweep_plots`), exact motions (:mod:`.exact_plots`), Euler's
-disk (:mod:`.euler_plot`); what they share (class colours, labels and units of axes) is
+the maps of steady motions (:mod:`.maps`), one trajectory or exact motion
+(:mod:`.trajectory_plots`), a sweep's nonlinear runs (:mod:`.sweep_plots`), Euler's disk
+(:mod:`.euler_plot`); what they share (class colours, labels and units of axes) is
 :mod:`.style`, image files :mod:`.images`.
 
 Map functions return a :class:`MapPlot`: the axes, the grid, the values on the grid (a
@@ -25,12 +25,6 @@ class code of :mod:`rollingdisk.theory.regions` or ``varpi2``) and the artists. 
 from __future__ import annotations
 
 from rollingdisk.plotting.euler_plot import euler_disk_title, plot_euler_disk
-from rollingdisk.plotting.exact_plots import (
-    plot_backbone,
-    plot_exact,
-    plot_exact_theta,
-    plot_rosette,
-)
 from rollingdisk.plotting.images import (
     DPI_RANGE,
     IMAGE_FORMATS,
@@ -53,9 +47,13 @@ from rollingdisk.plotting.style import LABELS as LABELS
 from rollingdisk.plotting.style import LEGEND_FONTSIZE as LEGEND_FONTSIZE
 from rollingdisk.plotting.sweep_plots import plot_basin_map, plot_nonlinear_map
 from rollingdisk.plotting.trajectory_plots import (
+    plot_backbone,
     plot_contact_forces,
     plot_energy_error,
+    plot_exact,
+    plot_exact_theta,
     plot_paths,
+    plot_rosette,
     plot_theta,
     plot_trajectory,
     trajectory_series,
