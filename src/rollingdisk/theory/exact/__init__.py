@@ -55,7 +55,7 @@ Where each part lives
 ``quadrature`` the linear system in theta, its sweeps and the work budget; ``chebyshev``
 the fit on ``[a, b]`` and the time along a leg; ``orbit`` the normal force along an orbit
 and a bounded (or steady) orbit at any time; ``solve`` :func:`exact_motion` and
-:func:`exact_steady`; ``result`` :class:`ExactMotion`; ``backbone`` :func:`backbone`;
+:func:`exact_steady`; ``result`` :class:`ExactMotion`; ``backbone_curve`` :func:`backbone`;
 ``thin_disk`` :func:`thin_disk_omega3`; ``inputs`` the checks of the public boundary.
 """
 
@@ -65,8 +65,8 @@ __getattr__, __dir__, __all__ = _attach(__name__, {
     "ExactMotion": "rollingdisk.theory.exact.result",
     "exact_motion": "rollingdisk.theory.exact.solve",
     "exact_steady": "rollingdisk.theory.exact.solve",
-    "Backbone": "rollingdisk.theory.exact.backbone",
-    "backbone": "rollingdisk.theory.exact.backbone",
+    "Backbone": "rollingdisk.theory.exact.backbone_curve",
+    "backbone": "rollingdisk.theory.exact.backbone_curve",
     "thin_disk_omega3": "rollingdisk.theory.exact.thin_disk",
     "EXACT_STATUSES": "rollingdisk.theory.exact.result",
     "NOT_CONVERGED_STATUS": "rollingdisk.theory.exact.result",
