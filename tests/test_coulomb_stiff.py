@@ -94,7 +94,7 @@ def test_stiff_runs_the_micro_slip_of_an_euler_disk_to_its_fall():
     """mu = 2, alpha0 = 0.1, c = 5e-3: rolling, then micro-slip (23 transitions) to the
     fall; compiled DOP853 needs 4,964,713 steps (docs/friction.md), LSODA tens of
     thousands, and both end at the same time."""
-    from rollingdisk.scenarios.euler_disk import _kicked_state
+    from rollingdisk.scenarios.euler_kernels import _kicked_state
 
     toy = EulerDisk(alpha0=0.1, mu=2.0, rolling_resistance=5e-3, friction="coulomb")
     x0 = _kicked_state(toy, 0.0)
