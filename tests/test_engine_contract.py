@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 from scipy.special import ellipk
 
 from rollingdisk.engine.contract import CONTINUE, Model
-from rollingdisk.engine.solve import solve
+from rollingdisk.engine.driver import solve
 from rollingdisk.model.equations import _rough_omega_dot, _rough_rhs
 from rollingdisk.model.outcomes import AT_REST
 from rollingdisk.util.errors import ParameterError, ParameterTypeError

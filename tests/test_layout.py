@@ -280,3 +280,15 @@ def test_no_private_name_imported_across_subpackages():
 
 #: The model's shared kernels (_inertia, _geometry, _check_disk, ...) and the engine's parts.
 PRIVATE_CROSSINGS = 53
+
+
+def test_no_package_name_is_also_one_of_its_submodules():
+    """Importing ``pkg.x`` binds the module to ``pkg.x``: a lazy name ``x`` of the package
+    (a function ``pkg.x``) would then be the module or the function by import order."""
+    clash = []
+    for path in PKG.rglob("__init__.py"):
+        table = _lazy_table(path) or {}
+        subs = {p.stem for p in path.parent.glob("*.py")} | {
+            p.name for p in path.parent.iterdir() if (p / "__init__.py").exists()}
+        clash += [f"{path.parent.name}.{n}" for n in table if n in subs]
+    assert not clash, f"package names that are also submodules: {clash}"

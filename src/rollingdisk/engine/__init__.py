@@ -10,7 +10,7 @@ from rollingdisk.util.lazy import attach as _attach
 __getattr__, __dir__, __all__ = _attach(__name__, {
     "Model": "rollingdisk.engine.contract",
     "Solution": "rollingdisk.engine.contract",
-    "solve": "rollingdisk.engine.solve",
+    "solve": "rollingdisk.engine.driver",
     "METHODS": "rollingdisk.engine.methods",
     "jit_compile": "rollingdisk.engine.jit",
 })

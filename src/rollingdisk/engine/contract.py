@@ -2,7 +2,7 @@
 
 A model of any phase of motion is a :class:`Model`: its state layout (named components),
 its right-hand side, its events (guards and mode switches), and where it has them its
-impact map and its energy.  The integrators of :mod:`rollingdisk.engine.solve` take these
+impact map and its energy.  The integrators of :mod:`rollingdisk.engine.driver` take these
 functions as explicit arguments (compiled with numba or run as plain Python, the same
 functions either way), so a new phase needs no new step loop.  docs/architecture.md,
 "Adding a model", states the contract in words; this module is its code.
@@ -161,7 +161,7 @@ class Model:
 
 @dataclass(frozen=True)
 class Solution:
-    """What :func:`rollingdisk.engine.solve.solve` returns.
+    """What :func:`rollingdisk.engine.driver.solve` returns.
 
     Attributes
     ----------

@@ -3,7 +3,7 @@
 :func:`integrate` takes a model's right-hand side, event functions and impact map as
 explicit arguments (nothing is re-bound, no module global stands for the model) and runs
 uncompiled as written or compiled by :mod:`rollingdisk.engine.steploop_numba` from this
-very source.  Callers use the driver :func:`rollingdisk.engine.solve.solve`, which checks
+very source.  Callers use the driver :func:`rollingdisk.engine.driver.solve`, which checks
 the arguments, picks the path and returns a frozen
 :class:`~rollingdisk.engine.contract.Solution`.
 
