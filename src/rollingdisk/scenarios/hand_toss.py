@@ -58,6 +58,8 @@ __all__ = ["HandLaunch", "precession_rate", "launch_state", "normal_z",
 #: How a hand toss ends: caught in the hand, or landing on the table.
 ENDINGS = ("caught", "table")
 _HALF_PI = 0.5 * math.pi
+#: Largest launch value accepted, in the paper's units (far beyond any toss).
+_BIG = 1e8
 
 
 @dataclass(frozen=True)
@@ -82,7 +84,7 @@ class HandLaunch:
         lines), which keeps the flips' symmetry ``psi <-> pi - psi``.
     flip_rate_spread, upward_speed_spread : float
         Half-widths of the uniform spreads of the flip rate and the upward speed, ``>= 0``;
-        the flip rate stays ``>= 0``.
+        a flip rate drawn below 0 is reflected (``|w|``).
     catch_height : float or None
         Height of the centre at the catch [``a``] (``caught``); ``None``: the release height.
 
@@ -105,14 +107,17 @@ class HandLaunch:
 
     def __post_init__(self):
         set_ = object.__setattr__
-        set_(self, "height", check_real("height", self.height, low=0.0))
-        set_(self, "upward_speed", check_real("upward_speed", self.upward_speed))
-        set_(self, "flip_rate", check_real("flip_rate", self.flip_rate, low=0.0))
+        # bounds far beyond any toss keep every phase Omega_p T finite
+        set_(self, "height", check_real("height", self.height, low=0.0, high=_BIG))
+        set_(self, "upward_speed", check_real("upward_speed", self.upward_speed, low=-_BIG,
+                                              high=_BIG))
+        set_(self, "flip_rate", check_real("flip_rate", self.flip_rate, low=0.0, high=_BIG))
         set_(self, "psi", check_real("psi", self.psi, low=0.0, high=_HALF_PI))
         for name in ("psi_spread", "flip_rate_spread", "upward_speed_spread"):
-            set_(self, name, check_real(name, getattr(self, name), low=0.0))
+            set_(self, name, check_real(name, getattr(self, name), low=0.0, high=_BIG))
         if self.catch_height is not None:
-            set_(self, "catch_height", check_real("catch_height", self.catch_height, low=0.0))
+            set_(self, "catch_height", check_real("catch_height", self.catch_height, low=0.0,
+                                                  high=_BIG))
 
     def describe(self, ending: str = "caught") -> str:
         """One line naming the launch model, its values (paper units) and the ending."""
