@@ -9,6 +9,7 @@ Examples::
     $ rollingdisk toss --h 0.1 --n 20 --seed 1
     $ rollingdisk toss --disk us-quarter --n 50 --workers 2 --results tosses.jsonl --json
     $ rollingdisk toss --h 0.3 --n 20 --out toss.png
+    $ rollingdisk toss --disk euro-1 --n 1000000 --catch --flip-rate 38rev/s --psi-spread 8deg
 """
 
 from __future__ import annotations
