@@ -10,6 +10,11 @@ from rollingdisk.util.lazy import attach as _attach
 
 __getattr__, __dir__, __all__ = _attach(__name__, {
     "toss_ensemble": "rollingdisk.scenarios.toss",
+    "HandLaunch": "rollingdisk.scenarios.hand_toss",
+    "caught_ensemble": "rollingdisk.scenarios.hand_toss",
+    "table_ensemble": "rollingdisk.scenarios.hand_toss",
+    "CaughtResult": "rollingdisk.scenarios.hand_toss",
+    "same_side_probability": "rollingdisk.scenarios.hand_toss",
     "AIR_VISCOSITY": "rollingdisk.scenarios.euler_disk",
     "END_KINDS": "rollingdisk.scenarios.euler_disk",
     "FIT_WINDOW": "rollingdisk.scenarios.euler_disk",
