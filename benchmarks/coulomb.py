@@ -46,7 +46,7 @@ if __name__ == "__main__":
     t = time.perf_counter()
     fs.compiled()
     load = time.perf_counter() - t
-    wc, b = long_run("compiled", T)
+    wc, b = long_run("dop853", T)
     wt_c, tb = one_toss()
     dt = max((abs(x.t - z.t) for x, z in zip(a.transitions, b.transitions)), default=0.0)
     print(json.dumps({

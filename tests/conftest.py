@@ -37,3 +37,55 @@ def derived():
     from rollingdisk.symbolic import lambdified
 
     return lambdified()
+
+
+# -- the suite leaves the checkout as it found it ------------------------------------------
+#: Caches that tools keep beside the sources (ignored by git, never outputs of a test).
+_CACHES = ("__pycache__/", ".pytest_cache/", ".hypothesis/", ".ruff_cache/", ".venv/",
+           ".egg-info/", ".nbi", ".nbc")
+
+
+def _checkout_state(root):
+    """``{path: status and content digest}`` of every file git reports as changed, new or
+    ignored in the checkout ``root`` (caches aside), or ``None`` outside a git checkout."""
+    import hashlib
+    import subprocess
+    from pathlib import Path
+
+    try:
+        res = subprocess.run(["git", "status", "--porcelain", "--ignored",
+                              "--untracked-files=all"], cwd=root, capture_output=True,
+                             text=True, timeout=120)
+    except (OSError, subprocess.SubprocessError):
+        return None
+    if res.returncode != 0:
+        return None
+    state = {}
+    for line in res.stdout.splitlines():
+        path = line[3:].strip('"')
+        if any(c in path for c in _CACHES):
+            continue
+        p = Path(root) / path
+        digest = hashlib.sha1(p.read_bytes()).hexdigest() if p.is_file() else "-"
+        state[path] = f"{line[:2]} {digest}"
+    return state
+
+
+def pytest_sessionstart(session):
+    session.config._checkout_before = _checkout_state(session.config.rootpath)
+
+
+def pytest_sessionfinish(session, exitstatus):
+    """Fail the run if it left, removed or changed a file in the checkout: every test
+    writes under a temporary directory (the CLI fuzz tests' hostile ``--out`` values too)."""
+    before = getattr(session.config, "_checkout_before", None)
+    if before is None:
+        return
+    after = _checkout_state(session.config.rootpath)
+    changed = sorted(p for p in set(before) | set(after) if before.get(p) != after.get(p))
+    if changed:
+        import sys
+
+        sys.stderr.write("\nthe test suite changed the checkout (every test must write under "
+                         "a temporary directory):\n" + "".join(f"  {p}\n" for p in changed))
+        session.exitstatus = 1

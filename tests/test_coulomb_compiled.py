@@ -22,8 +22,8 @@ def ns():
 
 def _both(disk, ground, span, y0, **kw):
     a = rd.simulate_coulomb(disk, ground, span, y0, method="scipy", **kw)
-    b = rd.simulate_coulomb(disk, ground, span, y0, method="compiled", **kw)
-    assert a.method == "dop853-scipy" and b.method == "dop853"
+    b = rd.simulate_coulomb(disk, ground, span, y0, method="dop853", **kw)
+    assert a.method == "scipy" and b.method == "dop853"
     assert a.status == b.status
     assert [(x.from_mode, x.to_mode) for x in a.transitions] == [
         (x.from_mode, x.to_mode) for x in b.transitions]
@@ -252,7 +252,7 @@ CONE_BOUNDARY = [-1.5964969830052462, 4.051714073632696, -0.43113211496797504,
                  0.8295890562671745]
 
 
-@pytest.mark.parametrize("method", ["scipy", "compiled"])
+@pytest.mark.parametrize("method", ["scipy", "dop853"])
 def test_a_slip_started_below_the_resolution_does_not_stall(method, ns):
     disk, g = rd.Disk(0.3), rd.Coulomb(0.5, rolling_resistance=0.01)
     runs = {tol: hy.simulate_coulomb(disk, g, (0.0, 2.0), CONE_BOUNDARY, rtol=tol,
@@ -267,3 +267,27 @@ def test_a_slip_started_below_the_resolution_does_not_stall(method, ns):
     # at the last, 1e-7 between rtol 1e-10 and 1e-11): not a tolerance artefact
     loose, tight = ([x.t for x in runs[tol].transitions] for tol in (1e-8, 1e-10))
     assert np.allclose(loose, tight, rtol=0.0, atol=5e-5)
+
+
+@pytest.mark.parametrize("old, new", [("compiled", "dop853"), ("stiff", "lsoda")])
+def test_old_method_spellings_warn_and_mean_the_same(old, new):
+    """One method vocabulary (rollingdisk.engine.methods): the old words of simulate_coulomb
+    still run, with a DeprecationWarning, and report the new word."""
+    if new == "dop853" and not fs.available():
+        pytest.skip("numba missing")
+    disk, ground = rd.Disk(0.2), rd.Coulomb(0.5)
+    y0 = [0, 0, 1, 0, 0, 0.3, 0, 0, 0, 0]
+    with pytest.warns(DeprecationWarning, match=f"now spelled '{new}'"):
+        a = rd.simulate_coulomb(disk, ground, (0, 0.2), y0, method=old)
+    b = rd.simulate_coulomb(disk, ground, (0, 0.2), y0, method=new)
+    assert a.method == b.method == new
+    np.testing.assert_array_equal(a.y, b.y)
+
+
+def test_a_method_no_front_door_has_is_refused_naming_the_words():
+    with pytest.raises(ValueError, match=r"method must be one of \('auto', 'dop853', "
+                                         r"'taylor', 'scipy'\), got 'lsoda'"):
+        rd.simulate(rd.Disk(0.2), "rough", (0, 1), [0, 0, 0, 0.3, 0, 0, 1.0, 0], method="lsoda")
+    with pytest.raises(TypeError, match="method must be a string"):
+        rd.simulate_coulomb(rd.Disk(0.2), rd.Coulomb(0.5), (0, 1),
+                            [0, 0, 1, 0, 0, 0.3, 0, 0, 0, 0], method=3)

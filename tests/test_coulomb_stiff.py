@@ -1,4 +1,4 @@
-"""``simulate_coulomb(method="stiff")``: scipy's LSODA through the same hybrid driver, held
+"""``simulate_coulomb(method="lsoda")``: scipy's LSODA through the same hybrid driver, held
 to the closed forms and to the explicit paths.  Its interpolant does not pass through a
 step's start, so events are looked for from the interpolant's start (and one that lies
 between the accepted state and it is an event at the step's start)."""
@@ -18,8 +18,8 @@ def test_stiff_sliding_disk_rolls_at_the_closed_form_time():
     """h = 0, upright, V = 1, mu = 0.2: u = 1 - 3 mu t vanishes at t* = 5/3 with V = 2/3;
     the slip dissipates 1/6 (tests/test_coulomb_compiled.py derives it)."""
     tr = rd.simulate_coulomb(rd.Disk(0.0), rd.Coulomb(0.2), (0, 2),
-                             [0, 0, 1, 0, 0, 0, 0, 0, 0, 0], method="stiff")
-    assert tr.method == "lsoda-scipy" and tr.status == "completed"
+                             [0, 0, 1, 0, 0, 0, 0, 0, 0, 0], method="lsoda")
+    assert tr.method == "lsoda" and tr.status == "completed"
     (x,) = tr.transitions
     assert (x.from_mode, x.to_mode) == ("sliding", "rolling")
     assert abs(x.t - 5.0 / 3.0) <= 1e-8
@@ -45,7 +45,7 @@ def test_stiff_and_explicit_paths_agree_through_micro_slip():
     disk, g, y0 = _circle()
     a = rd.simulate_coulomb(disk, g, (0, 0.25), y0, method="scipy", rtol=1e-10,
                             atol=1e-12)
-    b = rd.simulate_coulomb(disk, g, (0, 0.25), y0, method="stiff", rtol=1e-11,
+    b = rd.simulate_coulomb(disk, g, (0, 0.25), y0, method="lsoda", rtol=1e-11,
                             atol=1e-13)
     assert [x.to_mode for x in a.transitions] == [x.to_mode for x in b.transitions] == [
         "sliding"]
@@ -58,7 +58,7 @@ def test_stiff_and_explicit_paths_agree_through_micro_slip():
 
 def test_stiff_converges_with_its_tolerance_over_a_long_slide():
     disk, g, y0 = _circle()
-    ends = [rd.simulate_coulomb(disk, g, (0, 3), y0, method="stiff", rtol=tol,
+    ends = [rd.simulate_coulomb(disk, g, (0, 3), y0, method="lsoda", rtol=tol,
                                 atol=tol * 1e-2) for tol in (1e-10, 1e-11)]
     for tr in ends:
         assert tr.status == "completed" and tr.n_steps < 2000  # measured 421, 544
@@ -94,13 +94,13 @@ def test_stiff_runs_the_micro_slip_of_an_euler_disk_to_its_fall():
     """mu = 2, alpha0 = 0.1, c = 5e-3: rolling, then micro-slip (23 transitions) to the
     fall; compiled DOP853 needs 4,964,713 steps (docs/friction.md), LSODA tens of
     thousands, and both end at the same time."""
-    from rollingdisk.scenarios.euler_disk import _kicked_state
+    from rollingdisk.scenarios.euler_kernels import _kicked_state
 
     toy = EulerDisk(alpha0=0.1, mu=2.0, rolling_resistance=5e-3, friction="coulomb")
     x0 = _kicked_state(toy, 0.0)
     y0 = [0.0, 0.0, x0[0], x0[1], 0.0, x0[2], 0.0, x0[3], x0[4], x0[5]]
     tr = rd.simulate_coulomb(rd.Disk(toy.h), rd.Coulomb(2.0, rolling_resistance=5e-3),
-                             (0, 200), y0, rtol=1e-10, atol=1e-12, method="stiff",
+                             (0, 200), y0, rtol=1e-10, atol=1e-12, method="lsoda",
                              alpha_min=1e-3, max_steps=10**6, max_wall_time=300)
     assert tr.status == "fell-flat", tr.message
     assert tr.n_steps < 100_000

@@ -22,13 +22,12 @@ from rollingdisk.scenarios.euler_disk import (
     AIR_VISCOSITY,
     FIT_WINDOW_AIR,
     EulerDisk,
-    _energy,
-    _family,
-    _rhs,
     creep_factor,
     predicted_exponents,
     run_euler_disk,
 )
+from rollingdisk.scenarios.euler_kernels import _energy, _rhs
+from rollingdisk.scenarios.euler_predict import _family
 from rollingdisk.util.errors import ParameterError
 
 

@@ -19,12 +19,11 @@ from rollingdisk.scenarios.euler_disk import (
     AIR_DENSITY,
     AIR_VISCOSITY,
     EulerDisk,
-    _energy,
-    _rhs,
     dissipation_laws,
     predicted_exponents,
     run_euler_disk,
 )
+from rollingdisk.scenarios.euler_kernels import _energy, _rhs
 from rollingdisk.util.errors import ParameterError
 
 BL = dict(rolling_resistance=0.0, air_viscosity=AIR_VISCOSITY, air_law="boundary-layer")

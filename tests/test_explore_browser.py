@@ -150,3 +150,34 @@ def test_no_motion_region_shows_the_reason(page):
     assert reason.is_displayed()
     assert reason.text == "No steady motion: " + str(exc.value)
     assert not page.execute_script("return document.getElementById('view').dataset.frames")
+
+
+def test_a_phone_wide_page_has_no_sideways_scroll_and_its_map_still_answers(page):
+    """At 420 CSS pixels (a phone) the page is one column no wider than the screen, and a
+    click on the scaled-down map still asks for the point under the finger."""
+    page.set_window_size(420, 900)
+    try:
+        page.get(page.current_url)
+        wait_for(page, "return document.getElementById('map').dataset.ready === '1'")
+        wide = page.execute_script(
+            "return [document.documentElement.scrollWidth, window.innerWidth,"
+            " Math.max(...[...document.querySelectorAll('body *')].map("
+            "e => e.getBoundingClientRect().right))]")
+        assert wide[0] <= wide[1] and wide[2] <= wide[1] + 0.5, wide
+        canvas = page.find_element(By.ID, "map")
+        scale = canvas.size["width"] / 560  # shown narrower than its 560 pixels
+        assert scale < 1
+        theta0, omega30 = 0.7, 1.4
+        px = (BOX["x0"] + theta0 / (0.5 * math.pi) * BOX["w"]) * scale
+        py = (BOX["y0"] + (1 - omega30 / 3.0) * BOX["h"]) * scale
+        ActionChains(page).move_to_element_with_offset(
+            canvas, int(round(px - canvas.size["width"] / 2)),
+            int(round(py - canvas.size["height"] / 2))).click().perform()
+        wait_for(page, "return document.getElementById('steady').dataset.exists === 'true'")
+        box = page.find_element(By.ID, "steady")
+        tol = 2.0 / scale  # a CSS pixel of the scaled map, in canvas pixels, twice
+        assert abs(float(box.get_attribute("data-theta0")) - theta0) < tol * 0.5 * math.pi \
+            / BOX["w"]
+        assert abs(float(box.get_attribute("data-value")) - omega30) < tol * 3.0 / BOX["h"]
+    finally:
+        page.set_window_size(1300, 980)

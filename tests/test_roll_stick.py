@@ -28,7 +28,7 @@ from rollingdisk.ivp import fastsegment as fs
 from rollingdisk.model import coulomb as eq
 
 N = 40
-METHODS = ["scipy", pytest.param("compiled", marks=pytest.mark.skipif(
+METHODS = ["scipy", pytest.param("dop853", marks=pytest.mark.skipif(
     not fs.available(), reason="numba not installed"))]
 
 

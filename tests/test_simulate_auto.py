@@ -1,12 +1,15 @@
-"""When a process loads the compiled integrator (its uncompiled seconds counted over all its
-runs against ``PY_BUDGET``), and what ``simulate(method="auto")`` (the default) runs.
+"""When a process loads the compiled integrator (its uncompiled steps counted over all its
+runs against ``PY_BUDGET``, a run's remaining steps projected against ``LOAD_WORTH``), and
+what ``simulate(method="auto")`` (the default) runs.
 
-No timing: the clock of the uncompiled seconds is replaced by one that advances by a fixed
-amount per reading, and the loader by a spy, so the rule is checked by counting."""
+No timing: the rule counts steps, and the loader is replaced by a spy that 'loads' the
+uncompiled module under a wrapper counting the chunks run 'compiled', so the rule is checked
+by counting; a test also holds that no clock reading changes a run."""
 
 from __future__ import annotations
 
 import math
+import time
 import types
 
 import numpy as np
@@ -17,18 +20,14 @@ from rollingdisk.engine import jit as _jit
 from rollingdisk.engine import pycore as _pycore
 
 Y0 = [0, 0, 0, 0.3, 0, 0.05, 2.0, 0.5]
-TICK = 0.01  # "seconds" between two readings of the fake clock: one uncompiled chunk
 
 
 @pytest.fixture
 def fresh(monkeypatch):
-    """A process with no compiled code loaded, nothing spent, a clock that advances by
-    TICK per reading, and a loader that records when it is called and 'loads' the
-    uncompiled module under a wrapper that counts the chunks run 'compiled'."""
-    ticks = iter(range(10**9))
-    monkeypatch.setattr(_jit, "clock", lambda: next(ticks) * TICK)
+    """A process with no compiled code loaded, nothing spent, and a loader that records the
+    steps spent when it is called."""
     monkeypatch.setattr(_jit, "_core", None)
-    monkeypatch.setattr(_jit, "_py_seconds", 0.0)
+    monkeypatch.setattr(_jit, "_py_steps", 0)
     monkeypatch.setattr(_jit, "LOAD_WORTH", math.inf)  # the projection rule: its own test
     log = types.SimpleNamespace(loads=[], compiled_chunks=0)
 
@@ -37,7 +36,7 @@ def fresh(monkeypatch):
         return _pycore.integrate(*args)
 
     def load():
-        log.loads.append(_jit.py_seconds())
+        log.loads.append(_jit.py_steps())
         _jit._core = types.SimpleNamespace(integrate=integrate)
         return 0.0
 
@@ -45,30 +44,38 @@ def fresh(monkeypatch):
     return log
 
 
+def _short():
+    """A run done in one uncompiled chunk, and its number of steps."""
+    tr = rd.simulate(rd.Disk(h=0.2), "rough", (0, 2), Y0, method="dop853")
+    assert tr.status == "completed" and tr.n_steps < _jit.PY_CHUNK
+    return tr
+
+
 def test_the_compiled_code_is_loaded_once_the_budget_is_spent_in_total(fresh, monkeypatch):
-    monkeypatch.setattr(_jit, "PY_BUDGET", 3.5 * TICK)
-    monkeypatch.setattr(_jit, "ready", lambda: True)
+    monkeypatch.setattr(_jit, "PY_BUDGET", math.inf)
+    n = _short().n_steps
+    monkeypatch.setattr(_jit, "_py_steps", 0)
+    monkeypatch.setattr(_jit, "PY_BUDGET", int(3.5 * n))
     spent = []
-    for _ in range(6):  # short runs of one chunk each: TICK uncompiled per run
-        before = _jit.py_seconds()
-        tr = rd.simulate(rd.Disk(h=0.2), "rough", (0, 2), Y0, method="dop853")
-        assert tr.status == "completed"
-        spent.append(_jit.py_seconds() - before)
-    # the first four runs go uncompiled (3 TICK < budget at the start of the fourth);
-    # the fifth finds 4 TICK >= budget, loads, and it and the sixth run compiled
-    assert spent == pytest.approx([TICK] * 4 + [0.0, 0.0])
-    assert fresh.loads == [pytest.approx(4 * TICK)]
+    for _ in range(6):  # short runs of one chunk each: n uncompiled steps per run
+        before = _jit.py_steps()
+        _short()
+        spent.append(_jit.py_steps() - before)
+    # the first four runs go uncompiled (3 n < budget at the start of the fourth);
+    # the fifth finds 4 n >= budget, loads, and it and the sixth run compiled
+    assert spent == [n] * 4 + [0, 0]
+    assert fresh.loads == [4 * n]
     assert fresh.compiled_chunks == 2
-    # no single run came near the budget: the old per-run rule would never have loaded
+    # no single run came near the budget: a per-run rule would never have loaded
     assert max(spent) < _jit.PY_BUDGET
 
 
 def test_a_run_switches_when_the_total_reaches_the_budget_mid_run(fresh, monkeypatch):
-    monkeypatch.setattr(_jit, "PY_BUDGET", 2.5 * TICK)
-    monkeypatch.setattr(_jit, "ready", lambda: True)
-    monkeypatch.setattr(_jit, "_py_seconds", 2 * TICK)  # earlier runs spent this much
+    c = _jit.PY_CHUNK
+    monkeypatch.setattr(_jit, "PY_BUDGET", int(2.5 * c))
+    monkeypatch.setattr(_jit, "_py_steps", 2 * c)  # earlier runs took this many
     plain = rd.simulate(rd.Disk(h=0.2), "rough", (0, 200), Y0, method="dop853")
-    assert fresh.loads == [pytest.approx(3 * TICK)]  # after one more chunk, mid-run
+    assert fresh.loads == [3 * c]  # after one more chunk, mid-run
     assert fresh.compiled_chunks >= 1
     monkeypatch.setattr(_jit, "_core", None)
     monkeypatch.setattr(_jit, "PY_BUDGET", math.inf)
@@ -77,43 +84,83 @@ def test_a_run_switches_when_the_total_reaches_the_budget_mid_run(fresh, monkeyp
     np.testing.assert_allclose(plain.y[:, -1], ref.y[:, -1], rtol=1e-10, atol=1e-10)
 
 
-def test_a_cold_cache_starts_one_compiler_and_the_runs_go_on(fresh, monkeypatch):
-    monkeypatch.setattr(_jit, "PY_BUDGET", 1.5 * TICK)
-    monkeypatch.setattr(_jit, "ready", lambda: False)
-    started = []
-    monkeypatch.setattr(_jit, "start_background_compile", lambda: started.append(1) or True)
-    monkeypatch.setattr(_jit, "worth_waiting", lambda elapsed, fraction: False)
-    for _ in range(4):
-        tr = rd.simulate(rd.Disk(h=0.2), "rough", (0, 2), Y0, method="dop853")
-        assert tr.status == "completed"
-    assert started and not fresh.loads and _jit.py_seconds() == pytest.approx(4 * TICK)
+@pytest.mark.parametrize("warm", [True, False])
+def test_a_cold_cache_changes_no_decision(fresh, monkeypatch, warm):
+    """The rule never asks whether the cache is ready: a cold cache is compiled in the
+    foreground at the chunk where a warm one would be loaded (no process left behind)."""
+    c = _jit.PY_CHUNK
+    monkeypatch.setattr(_jit, "ready", lambda: warm)
+    monkeypatch.setattr(_jit, "PY_BUDGET", int(2.5 * c))
+    monkeypatch.setattr(_jit, "_py_steps", 2 * c)
+    rd.simulate(rd.Disk(h=0.2), "rough", (0, 200), Y0, method="dop853")
+    assert fresh.loads == [3 * c]
 
 
-def test_a_warm_cache_is_loaded_by_the_first_run_projected_past_load_worth(fresh,
-                                                                          monkeypatch):
-    """With a ready cache a run loads at the first chunk boundary at which the rest of it is
-    projected to need more than LOAD_WORTH uncompiled, however little the process spent."""
+def test_a_run_projected_past_load_worth_loads_after_its_first_chunk(fresh, monkeypatch):
+    """A run loads at the first chunk boundary at which the rest of it is projected to need
+    more than LOAD_WORTH steps uncompiled, however little the process spent."""
+    c = _jit.PY_CHUNK
     monkeypatch.setattr(_jit, "PY_BUDGET", math.inf)  # the total rule never fires here
-    monkeypatch.setattr(_jit, "LOAD_WORTH", 5 * TICK)
-    monkeypatch.setattr(_jit, "ready", lambda: True)
-    short = rd.simulate(rd.Disk(h=0.2), "rough", (0, 2), Y0, method="dop853")
-    assert short.status == "completed" and not fresh.loads  # done in its first chunk
-    before = _jit.py_seconds()
+    monkeypatch.setattr(_jit, "LOAD_WORTH", 5 * c)
+    short = _short()
+    assert not fresh.loads  # done in its first chunk
+    before = _jit.py_steps()
+    assert before == short.n_steps
     tr = rd.simulate(rd.Disk(h=0.2), "rough", (0, 200), Y0, method="dop853")
     assert tr.status == "completed"
-    # one uncompiled chunk (1/100 of the span or less: projected >= 5 TICK more), then loaded
-    assert fresh.loads == [pytest.approx(before + TICK)]
-    assert _jit.py_seconds() - before == pytest.approx(TICK)
+    # one uncompiled chunk (about 1/100 of the span: projected > 5 chunks more), then loaded
+    assert fresh.loads == [before + c]
     assert fresh.compiled_chunks >= 1
     n = fresh.compiled_chunks
-    rd.simulate(rd.Disk(h=0.2), "rough", (0, 2), Y0, method="dop853")  # compiled from start
+    _short()  # compiled from its start
     assert fresh.compiled_chunks == n + 1 and len(fresh.loads) == 1
 
 
-def test_worth_loading_projects_from_the_part_done():
-    assert _jit.worth_loading(0.02, 0.1)  # 0.18 s more
-    assert not _jit.worth_loading(0.02, 0.5)  # 0.02 s more
-    assert not _jit.worth_loading(0.0, 0.0) and not _jit.worth_loading(0.5, 1.0)
+def test_worth_loading_projects_the_steps_ahead_from_the_part_done(monkeypatch):
+    monkeypatch.setattr(_jit, "LOAD_WORTH", 1000)
+    assert _jit.worth_loading(200, 0.1)  # 1800 steps more
+    assert not _jit.worth_loading(200, 0.5)  # 200 more
+    assert not _jit.worth_loading(0, 0.0) and not _jit.worth_loading(500, 1.0)
+
+
+def test_no_clock_changes_a_run(monkeypatch):
+    """Every decision counts steps: a run on a machine a thousand times slower (a clock
+    that races) takes the same steps, in the same chunks, and gives the same bits."""
+    monkeypatch.setattr(_jit, "_core", None)
+    monkeypatch.setattr(_jit, "_py_steps", 0)
+    monkeypatch.setattr(_jit, "jit_compile", lambda: 0.0)  # never load (numba stays out)
+    a = rd.simulate(rd.Disk(h=0.2), "rough", (0, 50), Y0, method="dop853")
+    real = time.perf_counter
+    monkeypatch.setattr(time, "perf_counter", lambda: 1000.0 * real())
+    monkeypatch.setattr(_jit, "_py_steps", 0)
+    b = rd.simulate(rd.Disk(h=0.2), "rough", (0, 50), Y0, method="dop853")
+    assert a.n_steps == b.n_steps and a.method == b.method
+    np.testing.assert_array_equal(a.y, b.y)
+
+
+def test_a_cold_compile_says_so_on_a_terminal_only(monkeypatch, capsys):
+    from rollingdisk.engine.compile import announce
+
+    class Tty:
+        def __init__(self):
+            self.text = ""
+
+        def isatty(self):
+            return True
+
+        def write(self, s):
+            self.text += s
+
+        def flush(self):
+            pass
+
+    tty = Tty()
+    monkeypatch.setattr("sys.stderr", tty)
+    announce("compiling x (once per machine; usually 10-60 s)")
+    assert tty.text == "rollingdisk: compiling x (once per machine; usually 10-60 s)\n"
+    monkeypatch.undo()
+    announce("compiling x")
+    assert capsys.readouterr().err == ""  # not a terminal: silent
 
 
 # ---------------------------------------------------------------------------- auto
@@ -179,9 +226,8 @@ def test_auto_on_smooth_ground_is_dop853(compiled):
 
 def test_auto_goes_on_with_taylor_once_the_code_is_loaded(compiled, monkeypatch):
     monkeypatch.setattr(_jit, "_core", None)
-    monkeypatch.setattr(_jit, "_py_seconds", 0.0)
-    monkeypatch.setattr(_jit, "PY_BUDGET", 1e-9)  # spent by the first chunk
-    monkeypatch.setattr(_jit, "ready", lambda: True)
+    monkeypatch.setattr(_jit, "_py_steps", 0)
+    monkeypatch.setattr(_jit, "PY_BUDGET", 1)  # spent by the first chunk
     seen = []
     tr = rd.simulate(rd.Disk(h=0.2), "rough", (0, 100), Y0, progress=seen.append)
     ref = rd.simulate(rd.Disk(h=0.2), "rough", (0, 100), Y0, method="dop853")

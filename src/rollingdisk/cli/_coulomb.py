@@ -62,6 +62,7 @@ def run_coulomb(args, disk, ground, motion) -> tuple[dict, list]:
     from rollingdisk.util.files import atomic_file
 
     y0 = _coulomb_state(args, disk, motion)
+    _check_finite_start(disk, ground, y0)
     options = {k: getattr(args, k) for k in ("rtol", "atol") if getattr(args, k) is not None}
     bar = progress_bar(args)
     try:
@@ -103,7 +104,7 @@ def run_until_rest(args, disk, ground, motion) -> tuple[dict, list]:
 
         check_writable(args.animate, name="--animate")
     y0 = _coulomb_state(args, disk, motion)
-    _check_finite_energy(disk, y0)
+    _check_finite_start(disk, ground, y0)
     res = simulate_to_rest(disk, ground, (0.0, args.t_end), y0, e=args.restitution,
                            max_wall=args.max_wall_time)
     if args.animate is not None:
@@ -124,18 +125,21 @@ def run_until_rest(args, disk, ground, motion) -> tuple[dict, list]:
     return {k: finite_or_none(v) for k, v in record.items()}, transitions
 
 
-def _check_finite_energy(disk, y0) -> None:
-    """Refuse a start whose energy overflows floating point (``omega3 = 1e160``), before
-    the run: its phases would each warn of the overflow before failing."""
-    import math
-
+def _check_finite_start(disk, ground, y0) -> None:
+    """Refuse, before the run, a start whose energy or contact forces overflow floating
+    point (``omega3 = 1e160``, ``--air 1.7e308``): the run would warn of the overflow in
+    every phase, then fail."""
     import numpy as np
 
-    from rollingdisk.model.coulomb import coulomb_energy
+    from rollingdisk.model.coulomb import coulomb_contact, coulomb_energy
     from rollingdisk.util.errors import ParameterError
 
+    y = np.asarray(y0, dtype=float)
     with np.errstate(all="ignore"):
-        energy = float(coulomb_energy(disk, np.asarray(y0, dtype=float)))
-    if not math.isfinite(energy):
-        raise ParameterError("y0 is too large: its energy overflows floating point, got "
-                             f"{np.asarray(y0, dtype=float).tolist()}")
+        values = [coulomb_energy(disk, y),
+                  *coulomb_contact(disk, ground, "rolling", y).values()]
+    if not np.all(np.isfinite(np.asarray(values, dtype=float))):
+        raise ParameterError("the start is beyond floating-point range: its energy or "
+                             "contact forces overflow (a ground coefficient: air, "
+                             "rolling_resistance, pivot; or the state), got "
+                             f"y0 = {y.tolist()}")

@@ -9,6 +9,7 @@ Examples::
     $ rollingdisk toss --h 0.1 --n 20 --seed 1
     $ rollingdisk toss --disk us-quarter --n 50 --workers 2 --results tosses.jsonl --json
     $ rollingdisk toss --h 0.3 --n 20 --out toss.png
+    $ rollingdisk toss --disk euro-1 --n 1000000 --catch --flip-rate 38rev/s --psi-spread 8deg
 """
 
 from __future__ import annotations
@@ -18,6 +19,13 @@ import os
 import sys
 
 from rollingdisk.cli._args import add_disk_options, disk_from_args, integer, real
+from rollingdisk.cli._launch import (
+    add_launch_options,
+    hand_launch_from_args,
+    launch_fields,
+    run_caught,
+    uses_hand_launch,
+)
 
 __all__ = ["configure", "run"]
 
@@ -52,6 +60,7 @@ def configure(subparsers):
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--out", default=None, metavar="FILE.png",
                    help="a bar chart of the outcome probabilities with their intervals")
+    add_launch_options(p)
     return p
 
 
@@ -62,32 +71,44 @@ def run(args) -> int:
     from rollingdisk.util.progress import ProgressBar
 
     disk = disk_from_args(args)
+    hand = uses_hand_launch(args)
+    if args.ending == "caught":
+        return run_caught(args, disk)
     if args.out:
         check_writable(args.out, name="out")
+    launch = hand_launch_from_args(args, disk) if hand else None
     # a progress line on a terminal (never in a pipe or with --json)
     bar = ProgressBar(label="tossing", delay=1.0, interval=0.5,
                       quiet=args.json or not sys.stderr.isatty())
     try:
-        res = toss_ensemble(disk, args.n, args.seed, e=args.e, mu=args.mu,
-                            workers=args.workers, results=args.results,
-                            max_wall=args.max_wall, progress=bar)
+        if launch is None:
+            res = toss_ensemble(disk, args.n, args.seed, e=args.e, mu=args.mu,
+                                workers=args.workers, results=args.results,
+                                max_wall=args.max_wall, progress=bar)
+        else:
+            from rollingdisk.scenarios.hand_toss import table_ensemble
+
+            res = table_ensemble(disk, launch, args.n, args.seed, e=args.e, mu=args.mu,
+                                 workers=args.workers, results=args.results,
+                                 max_wall=args.max_wall, progress=bar)
     finally:
         bar.close()
     if args.json:
-        print(json.dumps(res.as_dict(), allow_nan=False))
+        print(json.dumps(res.as_dict() | launch_fields(args, disk, launch), allow_nan=False))
     else:
         for k in TOSS_OUTCOMES:
             lo, hi = res.interval(k)
             print(f"{k:10s} {res.counts[k]:6d}  p = {res.counts[k] / res.n:.4f}  "
                   f"95% [{lo:.4f}, {hi:.4f}]")
+        print("; ".join(f"{k} = {v}" for k, v in launch_fields(args, disk, launch).items()))
         print(f"h = {res.h:g}, n = {res.n}, seed = {res.seed}, {res.wall_time:.1f} s",
               file=sys.stderr)
     if args.out:
-        _plot(res, args)
+        _plot(res, args, "hand" if hand else "uniform")
     return 0
 
 
-def _plot(res, args) -> None:
+def _plot(res, args, launch: str) -> None:
     from matplotlib.figure import Figure  # no pyplot: the user's backend is left alone
 
     from rollingdisk.scenarios.toss import TOSS_OUTCOMES
@@ -100,7 +121,8 @@ def _plot(res, args) -> None:
            [res.interval(k)[1] - pk for k, pk in zip(TOSS_OUTCOMES, p)]]
     ax.bar(TOSS_OUTCOMES, p, yerr=err, capsize=4, color="0.6")
     ax.set_ylabel("probability (95 % Wilson interval)")
-    ax.set_title(f"coin toss, h = {res.h:g}, n = {res.n}, e = {args.e:g}, mu = {args.mu:g}")
+    ax.set_title(f"coin toss, h = {res.h:g}, n = {res.n}, e = {args.e:g}, mu = {args.mu:g}, "
+                 f"{launch} launch")
     fig.tight_layout()
     with atomic_file(args.out, "wb") as f:
         fig.savefig(f, format="png")

@@ -25,7 +25,7 @@ import types
 from collections.abc import Iterable, Sequence
 
 __all__ = ["compile_namespace", "recompile", "numba_available", "source_key", "marker_key",
-           "write_marker"]
+           "write_marker", "announce"]
 
 #: source_key by module names: the sources do not change under a running process, and the
 #: hash is asked for on every compiled-or-not decision.
@@ -151,3 +151,17 @@ def recompile(ns: dict, names: Iterable[str]) -> None:
         d = ns[name]
         if getattr(d, "signatures", None):
             d.recompile()
+
+
+def announce(line: str) -> None:
+    """Say on a terminal, in one line on stderr, that a compile is starting (it can take a
+    minute and would otherwise look like a hang); silent when stderr is not a terminal."""
+    import sys
+
+    stream = sys.stderr
+    try:
+        if stream is not None and stream.isatty():
+            stream.write(f"rollingdisk: {line}\n")
+            stream.flush()
+    except (OSError, ValueError):  # a closed or broken stderr: nothing to say it on
+        pass

@@ -1,13 +1,14 @@
 """The two integration drivers behind :func:`rollingdisk.simulate` (private).
 
 :func:`run_compiled` runs the DOP853 of :mod:`rollingdisk.engine.dop853` in chunks of about
-``_CHUNK_SECONDS`` of wall time (the integrator pauses without changing its steps), so that
+``_CHUNK_SECONDS`` of wall time when compiled and of :data:`rollingdisk.engine.jit.PY_CHUNK`
+steps when not (the integrator pauses without changing its steps), so that
 ``progress`` is called, the step budget is kept and ``KeyboardInterrupt`` or ``Terminated``
 (SIGTERM) surfaces between chunks.  Each chunk runs compiled
 (:mod:`rollingdisk.engine.numba_core`)
 or uncompiled (:mod:`rollingdisk.engine.pycore`), as :mod:`rollingdisk.engine.jit` decides
-(uncompiled until the process has spent ``PY_BUDGET`` seconds uncompiled over all its runs,
-then loaded, switching between chunks); ``method="taylor"`` and ``"auto"`` run the Taylor
+(uncompiled until the work is worth the compiled code, counted in steps, then loaded,
+switching between chunks); ``method="taylor"`` and ``"auto"`` run the Taylor
 method of :mod:`rollingdisk.engine.taylor` through the same loop.
 :func:`run_scipy` steps scipy's own
 ``DOP853`` one step at a time and does the same in Python.  Both sample the guards of
@@ -109,8 +110,10 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
     :func:`rollingdisk.engine.jit.pick_core` decides), ``"taylor"`` (compiled or loaded
     first, as :func:`jit_compile`) or ``"auto-taylor"`` (DOP853 as ``"dop853"`` while the
     process has no compiled code, the Taylor method at ``taylor_tol = (rtol, atol)`` from
-    the chunk on which it has).  The uncompiled seconds are counted against the process's
-    budget (:func:`rollingdisk.engine.jit.spend`).
+    the chunk on which it has).  The uncompiled steps are counted against the process's
+    budget (:func:`rollingdisk.engine.jit.spend`); uncompiled chunks are
+    :data:`rollingdisk.engine.jit.PY_CHUNK` steps, so that the boundaries at which the rule
+    is applied are the same on every machine.
     """
     from rollingdisk.engine import taylor as _taylor
 
@@ -138,21 +141,21 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
     n_steps = n_rhs = 0
     h_next = 0.0 if first_step is None else first_step
     tc, yc = t0, y
-    chunk = {"compiled": 2000, "uncompiled": 50, "taylor": 2000 if progress is None else 10}
-    state = {}
-    spent_here = 0.0  # uncompiled seconds of this run (pick_core projects from them)
+    chunk = {"compiled": 2000, "uncompiled": _jit.PY_CHUNK,
+             "taylor": 2000 if progress is None else 10}
+    steps_here = 0  # uncompiled steps of this run (pick_core projects from them)
     later = False
     segments = []
     kinds = []
     while True:
-        core, compiled = _jit.pick_core(state, spent_here, (tc - t0) / (t1 - t0))
+        core, compiled = _jit.pick_core(steps_here, (tc - t0) / (t1 - t0))
         kind = ("taylor" if compiled and taylor_tol is not None
                 else "compiled" if compiled else "uncompiled")
         if not kinds or kinds[-1] != kind:
             kinds.append(kind)
         te_c = te[np.searchsorted(te, tc, side="right"):] if later and has_t_eval else te
         t_before = tc
-        w = _jit.clock()
+        w = time.perf_counter()
         if kind == "taylor":
             ts_c, ys_c, ns, code, event, tc, yc = _call(
                 core._tay_integrate, rough, disk.h, tc, yc, t1, t_rtol, t_atolv, max_step,
@@ -166,11 +169,11 @@ def run_compiled(disk, ground, y, t0, t1, *, rtol, atol, max_step, first_step, t
                 _call(core.integrate, *args) if compiled else core.integrate(*args))
             if dense_output:
                 segments.extend(zip(st, sdt, sy, sF))
-        w = _jit.clock() - w
+        w = time.perf_counter() - w
         if not compiled:
-            _jit.spend(w)
-            spent_here += w
-        if ns > 0:  # aim at _CHUNK_SECONDS per chunk
+            _jit.spend(ns)
+            steps_here += ns
+        elif ns > 0:  # compiled chunks: aim at _CHUNK_SECONDS per chunk
             chunk[kind] = int(min(max(chunk[kind] * _CHUNK_SECONDS / max(w, 1e-6), 10),
                                   1_000_000))
             if kind == "taylor" and progress is not None and tc > t_before:

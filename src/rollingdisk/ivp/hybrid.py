@@ -54,6 +54,7 @@ from functools import cached_property
 
 import numpy as np
 
+from rollingdisk.engine.methods import check_method
 from rollingdisk.ivp import fastsegment as _fs
 from rollingdisk.ivp.simulation import _check_state
 from rollingdisk.model import coulomb as _cl
@@ -184,12 +185,6 @@ def energy_balance(traj: Trajectory) -> float:
     return float(np.max(np.abs(total - total[0])) / max(abs(total[0]), 1.0))
 
 
-#: The refusal of a start where the equations are not finite.
-_NOT_FINITE = ("the equations of motion are not finite at the initial state ({t}): a ground "
-               "coefficient (air, mu, rolling_resistance, pivot) or the state is beyond "
-               "floating-point range")
-
-
 class _Singular(ArithmeticError):
     """The right-hand side left floating-point range (scipy's DOP853 would loop on NaN)."""
 
@@ -291,7 +286,7 @@ def _DOP853():
 
 
 def _LSODA():
-    """scipy's LSODA class (``method="stiff"``), imported when such a run starts."""
+    """scipy's LSODA class (``method="lsoda"``), imported when such a run starts."""
     from scipy.integrate import LSODA
 
     return LSODA
@@ -329,12 +324,12 @@ DEFAULT_MAX_WALL_TIME = 60.0
 #: Stored points beyond which every other regular step is dropped (memory: about 250 bytes
 #: a point); above the default step budget, so a run within it keeps every step.
 DEFAULT_MAX_POINTS = 500_000
-#: ``method="auto"``: seconds of scipy-path stepping, over all Coulomb runs of the process,
-#: after which the compiled loop (:mod:`rollingdisk.ivp.fastsegment`) is loaded (0.4 s
-#: from numba's on-disk cache, about 7 s to compile it the first time on a machine) and
-#: every later step is compiled (the run under way switches at its next check, with the
-#: step size it would have tried next).  A short script never imports numba.
-PY_BUDGET = 0.5
+#: ``method="auto"``: scipy-path steps (about half a second), over all Coulomb runs of the
+#: process, after which the compiled loop (:mod:`rollingdisk.ivp.fastsegment`) is loaded
+#: (or compiled, announced on a terminal) and every later step is compiled; the run under
+#: way switches at its next check (every 64 steps) with the step size it would have tried
+#: next.  Steps, not seconds: the switch is at the same step on every machine.
+PY_BUDGET = 2_000
 #: ``method="auto"`` compiles on a cold cache only when the run has at least this many
 #: seconds of its wall-clock budget left (so ``max_wall_time`` still bounds it).
 COMPILE_ROOM = 30.0
@@ -343,8 +338,8 @@ CHUNK = 1024
 
 #: Seconds of wall clock between two calls of ``progress`` at most (while the run steps).
 REPORT_EVERY = 0.5
-_py_seconds = 0.0
-METHODS = ("auto", "compiled", "scipy", "stiff")
+_py_steps = 0
+METHODS = ("auto", "dop853", "scipy", "lsoda")
 
 
 def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *,
@@ -399,28 +394,26 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     progress : callable, optional
         ``progress(fraction)`` with the fraction of ``t_span`` done, called about every
         percent of it and at least every :data:`REPORT_EVERY` seconds.
-    method : {"auto", "compiled", "scipy", "stiff"}
-        ``"scipy"``: scipy's DOP853 driven from Python.  ``"stiff"``: scipy's LSODA (it
-        switches to BDF where the problem is stiff) driven from Python, events located the
-        same way on its interpolant: for long micro-slip at the edge of the friction cone,
-        where the slip's direction relaxes at a rate of order ``mu g/|u|`` and DOP853 needs
-        about 1e5 steps per time unit (an Euler's disk run to its fall: 32,680 LSODA steps
-        in 13 s against 4,964,713 compiled DOP853 steps in 65 s, docs/friction.md).
-        ``"compiled"``: the steps without events in the compiled loop of
-        :mod:`rollingdisk.ivp.fastsegment` (numba; 20-50 times as fast; compiled once
-        per machine, about 7 s, then loaded from numba's cache in 0.4 s).  ``"auto"``
-        (default): scipy until the process has spent :data:`PY_BUDGET` seconds on
-        scipy-path Coulomb steps, then compiled (at once if the compiled loop is loaded
-        already) where numba is installed.  ``"scipy"`` and ``"compiled"`` take the same
-        steps and locate events the same way: transitions agree to about 1e-10.
+    method : {"auto", "dop853", "scipy", "lsoda"}
+        Words of :mod:`rollingdisk.engine.methods`.  ``"scipy"``: scipy's DOP853 driven
+        from Python.  ``"lsoda"``: scipy's LSODA (BDF where the problem is stiff) driven
+        from Python, events located the same way on its interpolant: for long micro-slip at
+        the edge of the friction cone, where the slip's direction relaxes at a rate of
+        order ``mu g/|u|`` and DOP853 needs about 1e5 steps per time unit (docs/friction.md
+        has the measurements).  ``"dop853"``: the steps without events in the compiled loop
+        of :mod:`rollingdisk.ivp.fastsegment` (numba, compiled once per machine).
+        ``"auto"`` (default): scipy for :data:`PY_BUDGET` steps of the process, then
+        compiled (at once if the loop is loaded) where numba is installed.  ``"scipy"`` and
+        ``"dop853"`` take the same steps and locate events the same way: transitions agree
+        to about 1e-10.
 
     Returns
     -------
     Trajectory
         With ``ground`` the :class:`Coulomb` value, ``mode`` per stored point,
         ``transitions`` and ``dissipated`` (see :class:`Trajectory`); ``method`` is
-        ``"dop853"`` if the compiled loop took steps, ``"lsoda-scipy"`` with ``"stiff"``,
-        else ``"dop853-scipy"``.
+        ``"dop853"`` if the compiled loop took steps (scipy's may have taken the first
+        ones), ``"lsoda"`` with ``"lsoda"``, else ``"scipy"``.
 
     Examples
     --------
@@ -432,10 +425,9 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         disk, ground, t_span, y0, rtol=rtol, atol=atol, max_step=max_step,
         max_steps=max_steps, max_transitions=max_transitions, max_wall_time=max_wall_time,
         max_points=max_points, slip_tol=slip_tol, alpha_min=alpha_min)
-    if method not in METHODS:
-        raise ParameterError(f"method must be one of {METHODS}, got {method!r}")
-    if method == "compiled" and not _fs.available():
-        raise ParameterError("method='compiled' needs numba (pip install numba)")
+    method = check_method(method, METHODS)
+    if method == "dop853" and not _fs.available():
+        raise ParameterError("method='dop853' needs numba (pip install numba)")
     hybrid = _Hybrid(disk, ground, t0, t1, y, options, guards, progress, method)
     hybrid.integrate()
     return hybrid.trajectory()
@@ -520,7 +512,7 @@ class _Hybrid:
     def __init__(self, disk, ground, t0, t1, y, options, guards, progress, method="scipy"):
         self.disk, self.ground, self.h = disk, ground, disk.h
         self.method = method
-        self.compiled = method == "compiled" or (method == "auto" and _fs.loaded())
+        self.compiled = method == "dop853" or (method == "auto" and _fs.loaded())
         self.used_compiled = False
         self.t0, self.t1 = t0, t1
         self.o = options
@@ -541,11 +533,7 @@ class _Hybrid:
         n = math.hypot(*W)
         if n > 0.0:
             self.run.rref = (W[0] / n, W[1] / n)
-        with np.errstate(all="ignore"):  # a non-finite start is refused just below
-            self.mode = self._initial_roll(self._initial_pivot(self._initial_mode()))
-            dy, *powers = self.run.solve(self.mode, self.z)[:8]
-        if not (np.all(np.isfinite(dy)) and np.all(np.isfinite(powers))):
-            raise ParameterError(_NOT_FINITE.format(t=f"t = {t0:.12g}"))
+        self.mode = self._initial_roll(self._initial_pivot(self._initial_mode()))
         self.points.add(t0, self.z, self.mode, pinned=True)
 
     def _initial_mode(self):
@@ -640,19 +628,11 @@ class _Hybrid:
         run.side = 1.0 if self.z[5] >= 0 else -1.0
         if self.compiled:
             return self._segment_compiled(0.0)
-        stiff = self.method == "stiff"
-        try:
-            with np.errstate(all="ignore"):
-                solver = (_LSODA() if stiff else _DOP853())(
-                    run.rhs(self.mode), self.t, self.z, self.t1, rtol=o["rtol"],
-                    atol=o["atol"], max_step=o["max_step"])
-        except _Singular as exc:  # the solver's set-up evaluates the right-hand side
-            self.status = "failed"
-            self.message = (f"the equations became singular at {exc} (a non-finite right-hand "
-                            f"side, theta = {self.z[5]:.6g} at a mode change)")
-            return False
+        stiff = self.method == "lsoda"
+        solver = (_LSODA() if stiff else _DOP853())(
+            run.rhs(self.mode), self.t, self.z, self.t1, rtol=o["rtol"], atol=o["atol"],
+            max_step=o["max_step"])
         g_old = run.events(self.mode, self.z)
-        clock = time.perf_counter()
         n_here = 0
         try:
             while solver.status == "running":
@@ -676,28 +656,30 @@ class _Hybrid:
                 g_old = self._accept(solver)
                 n_here += 1
                 if self.method == "auto" and n_here % 64 == 0:
-                    now = time.perf_counter()
-                    _spend(now - clock)
-                    clock = now
+                    _spend(64)
                     if self._switch():
                         return self._segment_compiled(solver.h_abs)
             return False
         finally:
-            _spend(time.perf_counter() - clock)
+            _spend(n_here % 64)
 
     def _switch(self):
-        """``method="auto"``: whether to go on compiled now (the process has spent
-        :data:`PY_BUDGET` s on the scipy path, numba is there, and a cold cache leaves
+        """``method="auto"``: whether to go on compiled now (the process has taken
+        :data:`PY_BUDGET` steps on the scipy path, numba is there, and a cold cache leaves
         :data:`COMPILE_ROOM` s of the wall budget); loads the compiled loop."""
         global _compile_failed
         if self.compiled:
             return True
-        if _compile_failed or _py_seconds < PY_BUDGET or not _fs.available():
+        if _compile_failed or _py_steps < PY_BUDGET or not _fs.available():
             return False
         if not _fs.loaded() and not _fs.cache_ready():
             left = self.o["max_wall_time"] - (time.perf_counter() - self.wall0)
             if left < COMPILE_ROOM:
                 return False
+        if not _fs.loaded() and not _fs.cache_ready():
+            from rollingdisk.engine.compile import announce
+
+            announce("compiling rollingdisk's Coulomb loop (once per machine; usually 10-60 s)")
         try:
             _fs.compiled()
         except Exception:  # noqa: BLE001 - numba broken: stay on the scipy path
@@ -1016,8 +998,8 @@ class _Hybrid:
             disk=self.disk, ground=self.ground, t=np.array(self.points.t), y=Z[:10],
             status=self.status, message=self.message, n_steps=self.n_steps,
             n_rhs=self.run.n_rhs,
-            method=("dop853" if self.used_compiled else "lsoda-scipy"
-                    if self.method == "stiff" else "dop853-scipy"),
+            method=("dop853" if self.used_compiled else "lsoda"
+                    if self.method == "lsoda" else "scipy"),
             t_event=self.t_event,
             wall_time=wall, mode=np.array(self.points.mode),
             transitions=tuple(self.transitions),
@@ -1027,10 +1009,10 @@ class _Hybrid:
 _compile_failed = False
 
 
-def _spend(seconds):
-    """Count ``seconds`` of scipy-path stepping against :data:`PY_BUDGET`."""
-    global _py_seconds
-    _py_seconds += max(0.0, seconds)
+def _spend(steps):
+    """Count ``steps`` scipy-path steps against :data:`PY_BUDGET`."""
+    global _py_steps
+    _py_steps += max(0, int(steps))
 
 
 class _DenseStep:

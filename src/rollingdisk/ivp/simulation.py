@@ -26,6 +26,7 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
+from rollingdisk.engine.methods import check_method
 from rollingdisk.model import events as _ev
 from rollingdisk.model.disk import Disk, check_ground
 from rollingdisk.model.equations import _check_disk, energy, equations_of_motion
@@ -208,6 +209,7 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
         :data:`~rollingdisk.model.state.SMOOTH_STATE`; finite, ``|theta| < pi/2`` and
         ``theta != 0`` if ``h > 0``, energy and rates of change finite.
     method : {"auto", "dop853", "taylor", "scipy"}
+        The words of :mod:`rollingdisk.engine.methods`.
         ``"auto"`` (default): the fastest method the process has for the tolerance at
         equal accuracy (:func:`rollingdisk.engine.jit.auto_method`; docs/simulation.md
         has the measured table): ``"scipy"`` with user ``events``, ``"dop853"`` with
@@ -216,12 +218,13 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
         larger than DOP853's at the tolerance asked for), which starts as
         uncompiled DOP853 while the process has no compiled code (``traj.method`` then
         says ``"dop853"`` or ``"dop853+taylor"``).
-        ``"dop853"``: rollingdisk's DOP853, uncompiled until the process has spent
-        ``rollingdisk.engine.jit.PY_BUDGET`` (0.4) s uncompiled over all its runs, then
-        compiled (numba); the same steps either way.  ``"taylor"``: a compiled
+        ``"dop853"``: rollingdisk's DOP853, uncompiled until the work is worth the
+        compiled code (:mod:`rollingdisk.engine.jit`: counted in steps, so the same run
+        takes the same path on every machine), then compiled (numba); the same steps
+        either way.  ``"taylor"``: a compiled
         Taylor-series method of order ``ceil(-ln(tol)/2) + 1``
-        (:mod:`rollingdisk.engine.taylor`; fewer, longer steps, 2-10 times as fast as
-        DOP853 at equal energy drift; compiled on first use, no ``dense_output``, no
+        (:mod:`rollingdisk.engine.taylor`; fewer, longer steps than DOP853 at equal energy
+        drift; compiled on first use, no ``dense_output``, no
         ``first_step``; ``n_rhs`` counts its series, one per step).
         ``"scipy"``: scipy's ``DOP853`` stepped on the numpy right-hand side.
     rtol : float
@@ -297,8 +300,7 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
     if isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer)) \
             or max_steps < 1:
         raise ParameterError(f"max_steps must be an integer >= 1, got {max_steps!r}")
-    if method not in _METHODS:
-        raise ParameterError(f"method must be one of {_METHODS}, got {method!r}")
+    method = check_method(method, _METHODS)
     if error_control not in _ERROR_CONTROL:
         raise ParameterError(f"error_control must be one of {_ERROR_CONTROL}, got "
                              f"{error_control!r}")

@@ -482,7 +482,7 @@ def _solve_law(W, gamma, e_n, e_t, mu):
     n = 720
     betas = np.linspace(0.0, 2.0 * math.pi, n + 1)
     # parts() at every beta at once (the scan; the roots are refined by parts() itself)
-    cb, sb = np.cos(betas), np.sin(betas)
+    cb, sb = np.cos(betas % (2.0 * math.pi)), np.sin(betas % (2.0 * math.pi))  # closed: 2pi as 0
     dens = W[2, 2] - mu * (WNT[0] * cb + WNT[1] * sb)
     with np.errstate(divide="ignore", invalid="ignore"):
         LNs = -b[2] / dens
@@ -491,9 +491,9 @@ def _solve_law(W, gamma, e_n, e_t, mu):
     gs = cb * xi1 - sb * xi0
     roots = []
     for i in np.flatnonzero((dens[:-1] > 0.0) & (dens[1:] > 0.0)
-                            & ((gs[:-1] == 0.0) | (gs[:-1] * gs[1:] < 0.0))):
+                            & ((gs[:-1] == 0.0) | (np.sign(gs[:-1]) * np.sign(gs[1:]) < 0.0))):
         ga, gb = g(betas[i]), g(betas[i + 1])
-        if ga * gb < 0.0:
+        if np.sign(ga) * np.sign(gb) < 0.0:  # signs: a product of tiny g underflows
             from scipy.optimize import brentq  # not at import: `import rollingdisk` is lean
 
             beta = brentq(g, betas[i], betas[i + 1], xtol=1e-16, rtol=8.9e-16)
@@ -600,6 +600,9 @@ def _impact(h, s, r, e_n, e_t, mu, mode_tol):
     Jinv, Rx = _jacobian_parts(h, theta, r)
     W = np.eye(3) + Rx.T @ Jinv @ Rx
     Lam, stick = _solve_law(W, gam, e_n, e_t, mu)
+    if not (Lam[2] >= 0.0 and math.hypot(Lam[0], Lam[1]) <= mu * Lam[2] * (1.0 + 1e-12)):
+        raise RuntimeError(f"impact law broke Coulomb's bound: Lam = {Lam.tolist()!r}, "
+                           f"mu = {mu!r} (|Lam_T| <= mu Lam_N, Lam_N >= 0; please report)")
     V2 = V + Lam
     w2 = w + Jinv @ _cross(r, Lam)
     gam2 = V2 + _cross(w2, r)
@@ -608,12 +611,8 @@ def _impact(h, s, r, e_n, e_t, mu, mode_tol):
     post[9:12] = Qx.T @ w2
     lost = -0.5 * float(Lam @ (gam + gam2))
     scale = mode_tol * max(1.0, float(np.linalg.norm(gam)))
-    if gam2[2] > scale:
-        mode = "flight"
-    elif math.hypot(gam2[0], gam2[1]) > scale:
-        mode = "sliding"
-    else:
-        mode = "rolling"
+    mode = ("flight" if gam2[2] > scale
+            else "sliding" if math.hypot(gam2[0], gam2[1]) > scale else "rolling")
     resid = _prox_residual(W, gam, Lam, e_n, e_t, mu)
     return ImpactResult(float(Lam[2]), Lam[:2].copy(), post, gam, gam2, lost, stick, mode,
                         resid)
@@ -652,7 +651,8 @@ def impact(disk: Disk, pre_state, contact, e: float, mu: float, *,
     for ``e = 1, mu = 0``; it needs the same ``e`` for the normal and the tangential
     velocity (``docs/impacts.md``).  Solved exactly: the sticking impulse
     ``-(1+e) W^-1 gamma-`` if it lies in ``C``, else the sliding direction by bracketed
-    root finding on its angle, polished by Newton's method.
+    root finding on its angle, polished by Newton's method; the impulse found is checked:
+    ``|Lam_T| <= mu Lam_N (1 + 1e-12)`` (``RuntimeError``, an internal error, if not).
 
     Examples
     --------

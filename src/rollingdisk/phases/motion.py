@@ -41,8 +41,8 @@ from rollingdisk.phases.impact import (
     free_flight,
     impact,
     lowest_point,
-    touchdown_time,
 )
+from rollingdisk.phases.touchdown import Spent, touchdown
 from rollingdisk.util.checks import check_int, check_real, check_span
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
@@ -421,45 +421,6 @@ def _face_impact(h, s):
     return flat, spin, face, lost, -s[8]
 
 
-class _Spent(Exception):  # noqa: N818 - a state: the wall budget ran out inside a phase
-    """The run's wall-clock budget ran out inside a phase (its ``t``: where it was)."""
-
-
-#: Heights the touchdown scan evaluates between two looks at the wall clock (~20 ms).
-_SCAN_BLOCK = 1024
-
-
-def _touchdown(disk, s, deadline: float = math.inf):
-    """:func:`touchdown_time`; where its conservative advancement stalls on a grazing
-    flight (the lowest point skimming the plane), a scan of the closed-form height on a
-    grid of steps ``<= 0.1/(1 + |omega|)`` and ``brentq`` on the first sign change.
-
-    The scan raises :class:`_Spent` once ``time.perf_counter()`` passes ``deadline`` (a
-    long flight of a tall or fast-spinning disk: millions of grid points, minutes)."""
-    try:
-        return touchdown_time(disk, s, inside_tol=1e-9)
-    except RuntimeError:
-        pass
-    from scipy.optimize import brentq
-
-    h = disk.h
-
-    def H(t):
-        x = free_flight(disk, s, t)
-        return _lowest_height(h, x[2], x[4])
-
-    V, Z = s[8], s[2]
-    T = V + math.sqrt(V * V + 2.0 * max(Z - min(1.0, h), 0.0)) + 1e-9
-    dt = 0.1 / (1.0 + float(np.linalg.norm(s[9:12])))
-    ts = np.arange(0.0, T + dt, dt)
-    for i in range(1, ts.size):
-        if i % _SCAN_BLOCK == 0 and time.perf_counter() > deadline:
-            raise _Spent(float(ts[i]))
-        if H(ts[i]) <= 0.0:
-            return brentq(H, ts[i - 1], ts[i], xtol=1e-15, rtol=8.9e-16)
-    return float(ts[-1])
-
-
 # --------------------------------------------------------------------- the loop
 def _check_inputs(disk, ground, t_span, y0, e, mu_impact, stop_at):
     if not isinstance(disk, Disk):
@@ -746,11 +707,10 @@ class _Motion:
                         "(Painleve's paradox of sliding with large friction; an impact "
                         "without collision, outside this model)", t, s)
         try:
-            tau = t_skip + _touchdown(self.disk, s_start, self.wall0 + self.max_wall)
-        except _Spent as spent:
+            tau = t_skip + touchdown(self.disk, s_start, self.wall0 + self.max_wall)
+        except Spent as spent:
             return ("end", "time-budget", f"wall-time budget exhausted: {self.max_wall:g} s "
-                    f"by t = {t:.12g} (finding the touchdown of a flight, searched to "
-                    f"t = {t + t_skip + spent.args[0]:.12g})", t, s)
+                    f"by t = {t:.12g} (finding a flight's touchdown, at t + {spent})", t, s)
         t_hit = t + tau
         if t_hit >= self.t1:
             s1 = free_flight(self.disk, s, self.t1 - t)
@@ -823,12 +783,7 @@ class _Motion:
     def _start_force(self, s, side, y):
         """``F_z`` in the mode :func:`simulate_coulomb` starts in at ``y``: rolling if the
         slip is zero and rolling's friction lies in the cone, else sliding (in the solved
-        slip direction when the slip is zero).  Computed with numpy's warnings off: a
-        start beyond floating-point range is refused by :func:`simulate_coulomb` next."""
-        with np.errstate(all="ignore"):
-            return self._start_force_of(s, side, y)
-
-    def _start_force_of(self, s, side, y):
+        slip direction when the slip is zero)."""
         h, g = self.h, self.ground
         slip, _ = _edge_velocity(h, s, side)
         U = math.hypot(slip[0], slip[1])

@@ -217,7 +217,8 @@ def plot_chirp_frequency(result, fig=None, *, rate: int = RATE, speed: float = 1
     dict
         ``fig``, ``ax`` and ``lines`` (``"frequency"``: the curve).
     """
-    from rollingdisk.plotting.plots import _pyplot, _thin
+    from rollingdisk.plotting.euler_plot import _thin
+    from rollingdisk.plotting.style import _pyplot
 
     r = _check_result(result)
     rate = _check_rate(rate)

@@ -58,7 +58,7 @@ def plot_spin_down_comparison(results, labels=None, fig=None, *,
         ``"<label>/Omega"`` (the curves) and ``"<label>/alpha_fit"``, ``"<label>/Omega_fit"``
         (the fitted power laws over the fit window, slopes ``result.exponents``).
     """
-    from rollingdisk.plotting.plots import _pyplot
+    from rollingdisk.plotting.style import _pyplot
     from rollingdisk.scenarios.euler_disk import EulerDiskResult
 
     if isinstance(results, dict):

@@ -318,7 +318,11 @@ def max_workers() -> int:
 def _launches(dist: TossDistribution, n: int, seed: int):
     """``(i, row)`` for ``i < n``: the rows of ``dist.draw(n, seed)``, drawn a block at a
     time (``Generator.random`` fills row after row from one stream, so blocks give the
-    same numbers)."""
+    same numbers).  A distribution with its own ``draw`` (a subclass) is drawn whole by
+    it: its stream may differ."""
+    if type(dist).draw is not TossDistribution.draw:
+        yield from ((i, tuple(row)) for i, row in enumerate(dist.draw(n, seed)))
+        return
     rng = np.random.default_rng(seed)
     lo = np.array([getattr(dist, k)[0] for k in dist.NAMES], float)
     hi = np.array([getattr(dist, k)[1] for k in dist.NAMES], float)

@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+from rollingdisk.engine.methods import check_method
 from rollingdisk.sweep.executors import EXECUTORS, METHODS
 from rollingdisk.sweep.grid import Perturbation, SweepGrid
 from rollingdisk.sweep.store import check_out
@@ -85,7 +86,7 @@ def check_run_options(grid, t_end, *, out=None, executor="serial", workers=None,
         rtol=check_real("rtol", rtol, low=1e-15, high=1.0),
         atol=check_real("atol", atol, low=1e-300, high=1.0),
         max_steps=check_int("max_steps", max_steps, low=1, high=MAX_STEPS_MAX),
-        method=_choice("method", method, METHODS),
+        method=check_method(method, METHODS),
     )
 
 
