@@ -429,3 +429,19 @@ def test_numeric_warnings_are_collected_once_and_others_left_alone():
             warnings.warn("old name", DeprecationWarning, stacklevel=1)
     assert caught.lines == ["RuntimeWarning: invalid value encountered in sqrt"]
     assert [w.category for w in outside] == [DeprecationWarning]
+
+
+def test_a_reader_that_leaves_is_one_line_not_a_traceback():
+    """``rollingdisk ... | head``: the output's reader gone before it is written (the read
+    end closed first, so that the write fails whatever the timing) is one line, exit 2."""
+    r, w = os.pipe()
+    os.close(r)
+    try:
+        res = subprocess.run([sys.executable, "-m", "rollingdisk", "thresholds", "--h", "0.2"],
+                             stdout=w, stderr=subprocess.PIPE, text=True, timeout=120,
+                             env=dict(os.environ, PYTHONPATH=str(SRC)))
+    finally:
+        os.close(w)
+    assert res.returncode == 2, res.stderr
+    assert res.stderr.strip() == ("rollingdisk thresholds: error: the output was closed by "
+                                  "its reader (a broken pipe)")

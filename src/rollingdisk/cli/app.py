@@ -24,6 +24,7 @@ JSON output is strict (``allow_nan=False``).  Each command is a module with
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import os
 import re
@@ -187,6 +188,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 parser.print_help(sys.stderr)
                 return 2
             status = int(args.handler(args) or 0)
+            sys.stdout.flush()  # a reader that left (| head) is reported here, not at exit
             check_signals()  # a Ctrl-C whose exception Python swallowed still counts
             return status
     except KeyboardInterrupt:
@@ -271,6 +273,11 @@ def _error_status(exc: Exception, args, n_done: int) -> int:
         return 2
     if isinstance(exc, INPUT_ERRORS):
         _say(f"{_prog(args)}: error: {exc}")
+        return 2
+    if isinstance(exc, BrokenPipeError):  # the reader of the output left (| head)
+        with contextlib.suppress(OSError, ValueError):  # nothing more goes to it
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        _say(f"{_prog(args)}: error: the output was closed by its reader (a broken pipe)")
         return 2
     if isinstance(exc, OSError) and _on_user_path(exc, args):
         where = f"{exc.filename}: " if exc.filename else ""
