@@ -13,9 +13,8 @@ Exit status and messages (every command, the same way):
 * 130 (Ctrl-C) and 143 (SIGTERM): one line, "rollingdisk: interrupted" / "terminated"
   (naming the outputs that were already complete, if any), and no partial file: every
   output is written under a temporary name and renamed when complete
-  (:mod:`rollingdisk.util.files`).  The handlers are installed before anything else
-  (the console script's entry, :func:`rollingdisk.cli.entry.main`, installs them before any
-  numeric module is imported).
+  (:mod:`rollingdisk.util.files`); the handlers are in before any numeric module is
+  imported (:func:`rollingdisk.cli.entry.main`).
 
 JSON output is strict (``allow_nan=False``).  Each command is a module with
 ``configure(subparsers)`` and ``run(args)``, which calls the library and only formats.
