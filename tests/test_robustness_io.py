@@ -445,3 +445,18 @@ def test_a_reader_that_leaves_is_one_line_not_a_traceback():
     assert res.returncode == 2, res.stderr
     assert res.stderr.strip() == ("rollingdisk thresholds: error: the output was closed by "
                                   "its reader (a broken pipe)")
+
+
+def test_a_coulomb_start_beyond_float_range_is_refused_by_the_api_too():
+    """simulate_coulomb itself (not only the CLI) refuses a start whose equations are not
+    finite, in one ParameterError and without a RuntimeWarning (was hybrid._Singular)."""
+    import warnings
+
+    import rollingdisk as rd
+
+    ground = rd.Coulomb(0.5, air=rd.AirDrag(1.7e308))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(rd.ParameterError, match="not finite at the start"):
+            rd.simulate_coulomb(rd.Disk(0.2), ground, (0, 1), [0, 0, 1, 0, 0, 0.3, 0, 0, 0, 2.0],
+                                method="scipy")

@@ -14,7 +14,7 @@ The disk is in one of two modes (:mod:`rollingdisk.model.coulomb`):
     lies inside the cone ``|F_t| <= mu_s F_z``, else it slides on in the new direction.
 ``..., pivot stuck``
     either mode with the vertical spin ``omega_z`` held at 0 by the pivoting friction
-    (set-valued: ``|M_z| <= c F_z``, issue 22).  Entered when ``omega_z`` reaches 0 (event
+    (set-valued: ``|M_z| <= c F_z``).  Entered when ``omega_z`` reaches 0 (event
     ``sz omega_z``, ``sz`` its sign on the segment) and the moment that holds it fits in
     ``c F_z``; left when that moment reaches ``c F_z`` (event ``c F_z - |M_piv|``).
 ``..., roll stuck``
@@ -32,16 +32,14 @@ Terminal guards as on the ideal grounds: lift-off (``F_z = 0``, eq. 11), edge co
 
 Integration: DOP853 stepped one step at a time; after each step every event function is
 evaluated on the step's dense output (at 9 points) and a sign change is located by
-``brentq`` on ``sol(t)``, never only at step ends.  Two paths take the same steps (scipy's
-step-size control): scipy's ``DOP853`` driven from Python (0.1-1 ms a step), and the
-compiled loop of :mod:`rollingdisk.ivp.fastsegment` (numba), which takes the steps
-without events and hands the driver only a step where an event function changes sign
-(``method``, :data:`PY_BUDGET`).  The energy dissipated by each term is
-integrated as four extra quadrature states, so ``E + dissipated = const`` (eq. 12) can be
-checked along a run.  A step budget (status ``"step-budget"``), a wall-clock budget
-(``"time-budget"``), a transition budget and a minimal step size (``"failed"``) bound the
-work, each with a message, never a hang; a cap on the stored points (thinning beyond it)
-bounds the memory.
+``brentq`` on ``sol(t)``, never only at step ends.  Two paths take the same steps: scipy's
+``DOP853`` driven from Python, and the compiled loop of :mod:`rollingdisk.ivp.fastsegment`,
+which hands the driver only a step where an event function changes sign (``method``,
+:data:`PY_BUDGET`).  The energy dissipated by each term is integrated as four extra
+quadrature states, so ``E + dissipated = const`` (eq. 12) can be checked along a run.
+Budgets of steps (status ``"step-budget"``), wall clock (``"time-budget"``) and transitions
+and a minimal step size (``"failed"``) bound the work, each with a message; a cap on the
+stored points (thinning beyond it) bounds the memory.
 """
 
 from __future__ import annotations
@@ -429,7 +427,15 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     if method == "dop853" and not _fs.available():
         raise ParameterError("method='dop853' needs numba (pip install numba)")
     hybrid = _Hybrid(disk, ground, t0, t1, y, options, guards, progress, method)
-    hybrid.integrate()
+    try:
+        with np.errstate(over="ignore", invalid="ignore"):  # non-finite is caught: _finite
+            hybrid.integrate()
+    except _Singular as exc:  # a solver's set-up met a right-hand side beyond float range
+        if hybrid.t == t0:
+            raise ParameterError(f"the equations of motion are not finite at the start "
+                                 f"({exc}): a ground coefficient (air, mu, rolling_resistance,"
+                                 f" pivot) or the state is beyond floating-point range") from None
+        hybrid.status, hybrid.message = "failed", f"the equations became singular at {exc}"
     return hybrid.trajectory()
 
 
