@@ -181,11 +181,10 @@ def test_vectorized_forms_are_nan_outside_the_domain(ground):
         assert all(np.isnan(c[0]) for c in circle_coefficients(H, ground, th))
         assert not stable_for_all_omega30(H, ground, th)[0]
         name = "h" if h < 0 else "theta0"
-        for call in (lambda: varpi2_closed_form(h, ground, th, 1.0, 1.0),
-                     lambda: circle_coefficients(h, ground, th),
-                     lambda: stable_for_all_omega30(h, ground, th)):
+        for func, extra in ((varpi2_closed_form, (1.0, 1.0)), (circle_coefficients, ()),
+                            (stable_for_all_omega30, ())):
             with pytest.raises(ValueError, match=f"{name} must lie in"):
-                call()
+                func(h, ground, th, *extra)
 
 
 def test_reduced_jacobian_validates():
