@@ -158,7 +158,7 @@ def _slots(name):
 
 
 @pytest.mark.parametrize("name", sorted(CALLS))
-@settings(max_examples=120, deadline=3000, derandomize=True,
+@settings(max_examples=120, deadline=None, derandomize=True,
           suppress_health_check=[HealthCheck.too_slow])
 @given(data=st.data())
 def test_hostile_argument_raises_only_type_or_value_errors(name, data):
@@ -184,3 +184,146 @@ def test_simulate_y0_beyond_floating_point_range():
     y0[0] = 10**400
     with pytest.raises(ValueError, match="y0"):
         rd.simulate(DISK, "rough", (0.0, 0.5), y0)
+
+
+# ---------------------------------------------------------------------------------------
+# every public name of every public subpackage (issue 36): tests/hostile_calls.py
+# ---------------------------------------------------------------------------------------
+import hostile_calls as hc  # noqa: E402
+
+#: Targets whose contract breaks in a module this branch may not edit (being split, or
+#: owned by the files/journal work of issue 36), each with a case below that xfails while
+#: it breaks and fails once it is fixed.  target -> (reason, a breaking (slot, value)); the
+#: arguments in PENDING_SLOTS (all of them where a target is not there) are left out of the
+#: runs above, its other arguments are held like everything else.
+PENDING_TARGETS = {
+    "rollingdisk.scenarios.euler_disk:predicted_exponents": (
+        "scenarios/euler_disk.py (being split) does not check that toy is an EulerDisk "
+        "(AttributeError) nor its window (IndexError)", (("arg", 0), "-1")),
+    "rollingdisk.scenarios.euler_disk:predicted_end_time": (
+        "scenarios/euler_disk.py (being split) does not check toy (AttributeError) and "
+        "returns NaN for alpha_end outside (0, alpha0)", (("arg", 0), "-1")),
+    "rollingdisk.scenarios.euler_disk:run_euler_disk": (
+        "scenarios/euler_disk.py (being split) indexes fit_window unchecked "
+        "(IndexError for np.array(0.3), a string, an empty tuple)",
+        (("kw", "fit_window"), "array(0.3)")),
+    "rollingdisk.scenarios.euler_disk:creep_factor": (
+        "scenarios/euler_disk.py (being split) converts slip, u_s with np.asarray: "
+        "OverflowError for 10**400", (("arg", 0), "10**400")),
+    "rollingdisk.plotting:trajectory_series": (
+        "plotting/plots.py (being split) does not check traj (AttributeError)",
+        (("arg", 0), "-1")),
+    "rollingdisk:toss_ensemble": (
+        "the toss journal (issue 36, files half) opens results unchecked: "
+        "IsADirectoryError for '/', OSError for a 300-character name", (("kw", "results"), "'/'")),
+    "rollingdisk.scenarios.toss:toss_ensemble": (
+        "the toss journal (issue 36, files half), as rollingdisk:toss_ensemble",
+        (("kw", "results"), "long name")),
+    "rollingdisk.sweep:open_sweep": (
+        "the sweep store (issue 36, files half): OSError for a 300-character name",
+        (("arg", 0), "long name")),
+}
+
+PENDING_SLOTS = {
+    "rollingdisk.scenarios.euler_disk:run_euler_disk": {("kw", "fit_window")},
+    "rollingdisk.scenarios.euler_disk:predicted_end_time": {("arg", 0), ("kw", "alpha_end")},
+    "rollingdisk:toss_ensemble": {("kw", "results")},
+    "rollingdisk.scenarios.toss:toss_ensemble": {("kw", "results")},
+}
+
+#: Targets where NaN at a single point is a documented answer, not a refusal.
+NAN_ANSWERS = {
+    "rollingdisk:critical_omega30_sq": "NaN = no positive root: stable for every omega30",
+    "rollingdisk:varpi2_zero_surface": "NaN = no positive root (critical_omega30_sq)",
+}
+
+
+@pytest.fixture(scope="module")
+def table(tmp_path_factory):
+    """The valid calls, with a sweep store to open (a tiny dataset: open_sweep loads any)."""
+    import xarray as xr
+
+    calls = hc.calls()
+    store = tmp_path_factory.mktemp("store") / "s.zarr"
+    xr.Dataset({"x": ("i", [1.0, 2.0])}).to_zarr(store)
+    func, _, kwargs = calls["rollingdisk.sweep:open_sweep"]
+    calls["rollingdisk.sweep:open_sweep"] = (func, (str(store),), kwargs)
+    return calls
+
+
+def _broken(table, triples):
+    out = []
+    for target, slot, label in triples:
+        if target in PENDING_TARGETS and slot in PENDING_SLOTS.get(target, {slot}):
+            continue
+        why = hc.one_call(target, slot, label, table)
+        if why and not (target in NAN_ANSWERS and why.endswith("NaN from finite input")):
+            out.append(why)
+    return out
+
+
+def test_every_public_name_of_every_subpackage_is_driven_or_skipped(table):
+    missing = [n for n in hc.public_callables()
+               if n not in table and n.split(":")[1] not in hc.SKIPPED]
+    assert missing == []
+    assert not set(PENDING_TARGETS) - set(table)
+
+
+def test_valid_calls_of_the_subpackages_work(table, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    slow = {"rollingdisk.sweep:run_sweep", "rollingdisk.sweep:basin_sweep"}
+    for target, (func, args, kwargs) in sorted(table.items()):
+        if target not in slow:
+            func(*args, **kwargs)
+
+
+@pytest.mark.filterwarnings("ignore")
+def test_a_seeded_sample_of_hostile_calls_keeps_the_contract(table, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # outputs named by hostile values land here
+    heavy = {"rollingdisk.sweep:run_sweep", "rollingdisk.sweep:basin_sweep"}
+    names = [n for n in sorted(table) if n not in heavy]
+    assert _broken(table, hc.sample(20261128, 3 * len(names), table, names)) == []
+
+
+@pytest.mark.slow
+@pytest.mark.filterwarnings("ignore")
+def test_every_hostile_value_in_every_argument_of_every_subpackage(table, tmp_path,
+                                                                   monkeypatch):
+    """The whole product: every driven target x argument x hostile value (>= 10,000 calls,
+    deterministic): 0 exceptions but TypeError/ValueError, 0 NaN at a point from finite
+    input."""
+    monkeypatch.chdir(tmp_path)
+    triples = [(target, slot, label) for target in sorted(table)
+               for slot in hc.slots(*table[target][1:])
+               for label, _ in hc.HOSTILE]
+    assert len(triples) >= 10_000
+    broken = _broken(table, triples)
+    assert broken == [], f"{len(broken)} of {len(triples)} calls:\n" + "\n".join(broken[:60])
+
+
+@pytest.mark.parametrize("target", sorted(PENDING_TARGETS))
+def test_pending_cases_still_break(target, table, tmp_path, monkeypatch):
+    reason, (slot, label) = PENDING_TARGETS[target]
+    monkeypatch.chdir(tmp_path)
+    if hc.one_call(target, slot, label, table) is not None:
+        pytest.xfail(reason)
+    pytest.fail(f"{target} now keeps the contract: drop it from PENDING_TARGETS ({reason})")
+
+
+@pytest.mark.parametrize(("h", "theta0"), [(0.17, 0.5), (0.17, 0.05), (2.0, 1.2), (0.0, 0.3),
+                                           (0.17, -0.4)])
+def test_the_refused_radii_are_exactly_those_without_a_circle(h, theta0):
+    """The range a refusal of ``varpi2_rough_rC`` names is the set where eq. (31) gives
+    ``Omega0^2 > 0``: checked on the map (arrays in, NaN marks) at radii either side."""
+    star = float(rd.r_C_star(h, theta0))
+    for r in (star - 1.0, star - 1e-3, star + 1e-3, star + 1.0):
+        positive = float(rd.Omega0_sq(np.array([h]), theta0, r)[0]) > 0
+        try:
+            rd.varpi2_rough_rC(h, theta0, r)
+            refused = None
+        except ValueError as exc:
+            refused = str(exc)
+        assert (refused is None) == positive, (r, refused)
+        if refused:
+            side = ">" if "r_C >" in refused else "<"
+            assert (r > star) != (side == ">"), refused  # r lies on the refused side

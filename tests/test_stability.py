@@ -69,8 +69,11 @@ def test_rC_route_agrees(h, theta0, lnr, lean):
     m = steady_motion(Disk(h=h), "rough", theta0, r_C=r_C)
     v = float(varpi2_rough_rC(h, theta0, r_C))
     assert agree(v, varpi2_linearized(m), jac_scale(m))
-    # the wrong side of r_C* has no steady motion: NaN
-    assert np.isnan(varpi2_rough_rC(h, theta0, float(r_C_star(h, theta0)) - side * 0.1))
+    # the wrong side of r_C* has no steady motion: NaN on a map, refused at a point
+    wrong = float(r_C_star(h, theta0)) - side * 0.1
+    assert np.isnan(varpi2_rough_rC(h, theta0, np.array([wrong]))[0])
+    with pytest.raises(ValueError, match="no steady circle"):
+        varpi2_rough_rC(h, theta0, wrong)
 
 
 @settings(max_examples=60, deadline=None)
@@ -162,16 +165,26 @@ def test_stability_dataclass():
         Stability(math.nan)
     with pytest.raises(AttributeError):
         s.varpi2 = 1.0
-    assert np.isnan(varpi2_circle(0.3, "rough", 0.5, 0.0))
+    assert np.isnan(varpi2_circle(0.3, "rough", 0.5, np.array([0.0]))[0])
+    with pytest.raises(ValueError, match="omega30 must be non-zero"):
+        varpi2_circle(0.3, "rough", 0.5, 0.0)
     assert varpi2_closed_form(0.0, "rough", 0.2, np.ones(3), np.ones(3)).shape == (3,)
 
 
 @pytest.mark.parametrize("ground", ["rough", "smooth"])
 def test_vectorized_forms_are_nan_outside_the_domain(ground):
+    """A map marks points outside the domain with NaN (False); a single point is refused,
+    naming the parameter."""
     for h, th in ((-1.0, 0.5), (0.3, math.pi / 2), (0.3, -2.0)):
-        assert np.isnan(varpi2_closed_form(h, ground, th, 1.0, 1.0))
-        assert all(np.isnan(c) for c in circle_coefficients(h, ground, th))
-        assert not stable_for_all_omega30(h, ground, th)
+        H = np.array([h])
+        assert np.isnan(varpi2_closed_form(H, ground, th, 1.0, 1.0)[0])
+        assert all(np.isnan(c[0]) for c in circle_coefficients(H, ground, th))
+        assert not stable_for_all_omega30(H, ground, th)[0]
+        name = "h" if h < 0 else "theta0"
+        for func, extra in ((varpi2_closed_form, (1.0, 1.0)), (circle_coefficients, ()),
+                            (stable_for_all_omega30, ())):
+            with pytest.raises(ValueError, match=f"{name} must lie in"):
+                func(h, ground, th, *extra)
 
 
 def test_reduced_jacobian_validates():

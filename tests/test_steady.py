@@ -230,8 +230,16 @@ def test_vectorized_maps():
             elif np.isfinite(Om[i, j]):
                 with pytest.raises(NoSteadyMotion):
                     steady_motion(Disk(h=0.4), "rough", float(th[i, 0]), r_C=float(rc[0, j]))
-    assert np.isnan(Omega0_sq(0.4, 2.0, 1.0)) and np.isnan(r_C_star(-1.0, 0.3))
-    assert np.isnan(Omega0_sq(0.4, math.atan(0.4), 1.0))
+    # outside the domain and at the SE tilt: NaN on a map, refused at a single point
+    assert np.isnan(Omega0_sq(0.4, np.array([2.0]), 1.0)[0])
+    assert np.isnan(r_C_star(np.array([-1.0]), 0.3)[0])
+    assert np.isnan(Omega0_sq(0.4, np.array([math.atan(0.4)]), 1.0)[0])
+    with pytest.raises(ValueError, match="theta0 must lie in"):
+        Omega0_sq(0.4, 2.0, 1.0)
+    with pytest.raises(ValueError, match="h must lie in"):
+        r_C_star(-1.0, 0.3)
+    with pytest.raises(ValueError, match="static-equilibrium tilt"):
+        Omega0_sq(0.4, math.atan(0.4), 1.0)
 
 
 def test_single_point_validation():

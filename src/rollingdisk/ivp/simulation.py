@@ -97,7 +97,7 @@ def _check_tolerances(rtol, atol):
 def _check_t_eval(t_eval, t0, t1):
     if t_eval is None:
         return None
-    t_eval = np.asarray(t_eval, dtype=float).ravel()
+    t_eval = real_array("t_eval", t_eval).ravel()
     if (t_eval.size == 0 or not np.all(np.isfinite(t_eval)) or np.any(np.diff(t_eval) < 0)
             or t_eval[0] < t0 or t_eval[-1] > t1):
         raise ParameterError("t_eval must be a non-empty increasing sequence of times within "

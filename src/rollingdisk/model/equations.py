@@ -39,7 +39,7 @@ from rollingdisk.model.disk import Disk, check_ground
 from rollingdisk.model.geometry import _geometry, _inertia
 from rollingdisk.model.state import _as_state, _reduced_state, _shape_error, state_names
 from rollingdisk.util.checks import real_array
-from rollingdisk.util.errors import ParameterTypeError
+from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["equations_of_motion", "omega_dot", "contact_force", "energy", "contact_point",
            "velocity_of_C"]
@@ -211,7 +211,9 @@ def omega_dot(disk: Disk, ground: str, theta, omega1, omega2, omega3):
     Returns
     -------
     tuple
-        The three angular accelerations.
+        The three angular accelerations.  At a single point (scalars in) finite input
+        whose terms overflow floating-point range (e.g. ``omega3 = 1e308``) is a
+        :class:`~rollingdisk.ParameterError`, never a NaN.
 
     Notes
     -----
@@ -219,10 +221,15 @@ def omega_dot(disk: Disk, ground: str, theta, omega1, omega2, omega3):
     inclination and the angular velocity; positions and ``psi, phi`` do not enter.
     """
     kernel = _rough_omega_dot if check_ground(ground) == "rough" else _smooth_omega_dot
-    for name, value in (("theta", theta), ("omega1", omega1), ("omega2", omega2),
-                        ("omega3", omega3)):
-        real_array(name, value)  # named errors for non-numbers and ints beyond float range
-    return kernel(_check_disk(disk).h, theta, omega1, omega2, omega3)
+    named = (("theta", theta), ("omega1", omega1), ("omega2", omega2), ("omega3", omega3))
+    arrays = [real_array(name, value) for name, value in named]  # named errors for
+    # non-numbers, masked entries and ints beyond float range
+    out = kernel(_check_disk(disk).h, theta, omega1, omega2, omega3)
+    if all(a.ndim == 0 and np.isfinite(a) for a in arrays) and np.any(np.isnan(out)):
+        raise ParameterError("omega_dot: the terms of eq. (38) / (49) overflow floating-point "
+                             f"range at theta={theta!r}, omega1={omega1!r}, "
+                             f"omega2={omega2!r}, omega3={omega3!r}")
+    return out
 
 
 def velocity_of_C(disk: Disk, ground: str, y):

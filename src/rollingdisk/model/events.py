@@ -47,7 +47,7 @@ from rollingdisk.model.outcomes import (  # noqa: F401 - the codes, for the kern
     outcome,
 )
 from rollingdisk.model.state import _reduced_state, state_index, state_names
-from rollingdisk.util.checks import real_array
+from rollingdisk.util.checks import check_real, real_array
 from rollingdisk.util.errors import ParameterError
 
 __all__ = ["GuardEvent", "LiftOff", "EdgeContact", "FellFlat", "GUARDS", "STATUSES",
@@ -95,7 +95,7 @@ class GuardEvent:
         self.disk = _check_disk(disk)
         self.ground = check_ground(ground)
         self.rough = self.ground == "rough"
-        self.side = 1.0 if side >= 0 else -1.0
+        self.side = 1.0 if check_real("side", side) >= 0 else -1.0
         self.i_theta = state_index(self.ground, "theta")
 
     def __call__(self, t: float, y) -> float:

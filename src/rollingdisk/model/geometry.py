@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from rollingdisk.util.checks import real_array
+
 __all__ = ["h_tilde", "inertia"]
 
 
@@ -30,7 +32,7 @@ def h_tilde(h, theta):
     >>> h_tilde(0.2, -0.5), h_tilde(0.2, 0.0)
     (-0.2, 0.2)
     """
-    ht = _geometry(h, theta)[0]
+    ht = _geometry(real_array("h", h), real_array("theta", theta))[0]
     return float(ht) if np.ndim(ht) == 0 else ht
 
 

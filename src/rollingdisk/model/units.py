@@ -320,6 +320,8 @@ def disk_from_options(disk: str | None = None, radius=None, diameter=None, thick
         a = parse_length(radius, f"{p}radius")
     elif diameter is not None:
         a = 0.5 * parse_length(diameter, f"{p}diameter")
+        if a == 0.0:  # a subnormal diameter halved to nothing
+            raise ParameterError(f"{p}diameter must be > 1e-323 m, got {diameter!r}")
     hh = None if h is None else _parse_h(h, f"{p}h")
     if a is None:
         if thickness is not None:
@@ -483,8 +485,11 @@ def si_fields(result, disk: Disk | None = None) -> dict:
     >>> round(si_fields(t)["rough_straight_line_speed_si"], 3)   # m/s
     0.197
     """
+    if disk is not None and not isinstance(disk, Disk):
+        raise ParameterTypeError(f"disk must be a rollingdisk.Disk or None, got "
+                                 f"{type(disk).__name__}")
     to = getattr(result, "to_si", None)
-    if to is None:
+    if to is None or not callable(to):
         raise ParameterTypeError(f"result must be a result of rollingdisk with an SI view "
                                  f"(to_si), got {type(result).__name__}")
     return to() if disk is None else to(disk)

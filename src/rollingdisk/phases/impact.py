@@ -31,7 +31,7 @@ import numpy as np
 from rollingdisk.model.disk import Disk, check_ground
 from rollingdisk.model.geometry import _inertia
 from rollingdisk.model.state import state_index, state_names
-from rollingdisk.util.checks import check_real
+from rollingdisk.util.checks import check_real, check_sign, real_array
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["FREE_STATE", "CONTACT_KINDS", "IMPACT_MODES", "LowestPoint", "ImpactResult",
@@ -62,11 +62,7 @@ def _check_disk(disk) -> Disk:
 
 
 def _as_free_state(state, name: str = "state") -> np.ndarray:
-    try:
-        s = np.asarray(state, dtype=float)
-    except (TypeError, ValueError):
-        raise ParameterTypeError(f"{name} must be an array of 12 real numbers "
-                                    f"({', '.join(FREE_STATE)}), got {state!r}") from None
+    s = real_array(name, state)
     if s.shape != (12,):
         raise ParameterError(f"{name} must have 12 components ({', '.join(FREE_STATE)}), "
                                 f"got shape {s.shape}")
@@ -193,7 +189,7 @@ def free_flight(disk: Disk, state, t):
     """
     h = _check_disk(disk).h
     s = _as_free_state(state)
-    ts = np.asarray(t, dtype=float)
+    ts = real_array("t", t)
     if not np.all(np.isfinite(ts)):
         raise ParameterError("t must be finite")
     if ts.ndim == 0:
@@ -218,7 +214,7 @@ def angular_momentum(disk: Disk, state, about=None) -> np.ndarray:
     L = _flight_constants(h, s)[0]
     if about is None:
         return L
-    o = np.asarray(about, dtype=float)
+    o = real_array("about", about)
     if o.shape != (3,) or not np.all(np.isfinite(o)):
         raise ParameterError(f"about must be a finite point (X, Y, Z), got {about!r}")
     return L + _cross(s[0:3] - o, s[6:9])
@@ -425,10 +421,8 @@ def contact_delassus(disk: Disk, theta, side: int = 1, cos_sign: int = 1) -> np.
     """
     h = _check_disk(disk).h
     theta = check_real("theta", theta)
-    if side not in (1, -1) or isinstance(side, bool):
-        raise ParameterError(f"side must be +1 or -1, got {side!r}")
-    if cos_sign not in (1, -1) or isinstance(cos_sign, bool):
-        raise ParameterError(f"cos_sign must be +1 or -1, got {cos_sign!r}")
+    side = check_sign("side", side)
+    cos_sign = check_sign("cos_sign", cos_sign)
     r = _r_xyz(h, theta, side, float(cos_sign))
     Jinv, Rx = _jacobian_parts(h, theta, r)
     return np.eye(3) + Rx.T @ Jinv @ Rx
@@ -581,11 +575,8 @@ def _contact_of(h, s, contact):
             raise ParameterError("contact: on the tread line give the rim edge that "
                                     "strikes, contact=+1 or -1")
         side = contact.side
-    elif contact in (1, -1) and not isinstance(contact, bool):
-        side = int(contact)
     else:
-        raise ParameterError(f"contact must be a LowestPoint or a rim edge +1 / -1, "
-                                f"got {contact!r}")
+        side = check_sign("contact (a LowestPoint or a rim edge)", contact)
     return _r_xyz(h, theta, side, sig_c)
 
 
@@ -722,10 +713,7 @@ def free_state_from_rolling(disk: Disk, ground: str, y) -> np.ndarray:
     """
     disk = _check_disk(disk)
     names = state_names(ground)
-    try:
-        y = np.asarray(y, dtype=float)
-    except (TypeError, ValueError):
-        raise ParameterTypeError(f"y must be an array of real numbers, got {y!r}") from None
+    y = real_array("y", y)
     if y.shape != (len(names),):
         raise ParameterError(f"y must have {len(names)} components on {ground} ground "
                                 f"({', '.join(names)}), got shape {y.shape}")

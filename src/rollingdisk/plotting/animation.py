@@ -38,6 +38,8 @@ __all__ = ["DiskPose", "body_frame", "disk_pose", "poses", "draw_disk", "animate
 
 #: Number of frames an animation may have.
 FRAMES_RANGE = (2, 2000)
+#: Most points on a drawn rim circle (a smooth circle needs ~50).
+_RIM_POINTS_MAX = 4096
 #: Frames per second.
 FPS_RANGE = (1, 60)
 #: Largest number of pixels of all frames together (frames x width x height): the GIF
@@ -57,6 +59,7 @@ def body_frame(psi: float, theta: float) -> tuple[np.ndarray, np.ndarray, np.nda
     -------
     (xi, eta, zeta) : tuple of (3,) ndarray
     """
+    psi, theta = check_real("psi", psi), check_real("theta", theta)
     sp, cp = math.sin(psi), math.cos(psi)
     st, ct = math.sin(theta), math.cos(theta)
     xi = np.array([cp, sp, 0.0])
@@ -102,7 +105,7 @@ def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: f
     X_C, Y_C, psi, theta, phi : float
         The centre C on the plane and the three angles [rad].
     n : int
-        Points on each rim circle.
+        Points on each rim circle, 3 to 4096.
     Z_C : float, optional
         Height of C for a disk off the contact (flight, flat on a face); then ``contact``
         is the lowest point of the disk (the centre of the lower face when it lies flat).
@@ -113,6 +116,10 @@ def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: f
     DiskPose
     """
     h = check_h(h)
+    X_C, Y_C, psi, theta, phi = (check_real(k, v) for k, v in (
+        ("X_C", X_C), ("Y_C", Y_C), ("psi", psi), ("theta", theta), ("phi", phi)))
+    Z_C = None if Z_C is None else check_real("Z_C", Z_C)
+    n = check_int("n", n, low=3, high=_RIM_POINTS_MAX)
     xi, eta, zeta = body_frame(psi, theta)
     _, _, _, _, y_P, z_P = _geometry(h, theta)
     y_P, z_P = float(y_P), float(z_P)
@@ -152,16 +159,21 @@ def poses(traj, n_frames: int = 60, *, n: int = 48) -> tuple[np.ndarray, list[Di
     traj : Trajectory
         Or any object with ``disk, ground, t, y``.
     n_frames : int
-        Number of frames (at least 2).
+        Number of frames, at most 2000 (fewer than 2 count as 2).
     n : int
-        Points on each rim circle.
+        Points on each rim circle, 3 to 4096.
 
     Returns
     -------
     (times, poses) : (ndarray, list of DiskPose)
     """
+    if not all(hasattr(traj, k) for k in ("disk", "ground", "t", "y")):
+        raise ParameterTypeError(f"traj must be a Trajectory (or have disk, ground, t, y), "
+                                 f"got {type(traj).__name__}")
+    n_frames = max(FRAMES_RANGE[0], check_int("n_frames", n_frames, high=FRAMES_RANGE[1]))
+    n = check_int("n", n, low=3, high=_RIM_POINTS_MAX)
     t = np.asarray(traj.t, float)
-    tf = np.linspace(t[0], t[-1], max(2, int(n_frames)))
+    tf = np.linspace(t[0], t[-1], n_frames)
     s = {k: np.interp(tf, t, trajectory_series(traj, k))
          for k in ("X_C", "Y_C", "psi", "theta", "phi")}
     h = traj.disk.h

@@ -16,7 +16,7 @@ import numpy as np
 
 from rollingdisk.model.equations import omega_dot
 from rollingdisk.results.trajectory import Trajectory
-from rollingdisk.util.checks import check_real, real_array
+from rollingdisk.util.checks import check_instance, check_int, check_real, real_array
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["energy_drift", "oscillation_frequency", "growth_rate", "fit_circle",
@@ -98,7 +98,7 @@ def oscillation_frequency(traj: Trajectory, *, min_periods: int = 2) -> float | 
         A simulated motion, e.g. from :func:`simulate_steady` with a small ``perturb``;
         store points densely enough (``max_step``) that each crossing is bracketed.
     min_periods : int
-        Fewest whole periods to measure.
+        Fewest whole periods to measure, at least 1 (a period needs two crossings).
 
     Returns
     -------
@@ -107,6 +107,7 @@ def oscillation_frequency(traj: Trajectory, *, min_periods: int = 2) -> float | 
         fewer than ``min_periods + 1`` times.
     """
     t = _check_trajectory(traj).t
+    min_periods = check_int("min_periods", min_periods, low=1)
     th = traj.theta
     if t.size < 3:
         return None
@@ -327,6 +328,11 @@ def compare_with_theory(traj: Trajectory, stability=None) -> TheoryComparison:
     if not isinstance(traj, Trajectory) or traj.motion is None:
         raise ParameterTypeError("traj must be a Trajectory from simulate_steady (one that "
                                  "knows its steady motion)")
+    from rollingdisk.theory.oscillations import Stability
+
+    if stability is not None:
+        check_instance("stability", stability, Stability,
+                       "a Stability (rollingdisk.stability(traj.motion)) or None")
     stab = _stab(traj.motion) if stability is None else stability
     varpi2 = float(stab.varpi2)
     predicted = math.sqrt(abs(varpi2))

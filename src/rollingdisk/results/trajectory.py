@@ -17,6 +17,7 @@ import numpy as np
 from rollingdisk.model.disk import Disk
 from rollingdisk.model.equations import contact_force, contact_point, energy
 from rollingdisk.model.state import state_index
+from rollingdisk.util.checks import real_array
 
 __all__ = ["Trajectory", "Transition"]
 
@@ -122,7 +123,7 @@ class Trajectory:
 
     def __post_init__(self):
         for name in ("t", "y"):
-            a = np.array(getattr(self, name), dtype=float)
+            a = np.array(real_array(name, getattr(self, name)))
             a.setflags(write=False)
             object.__setattr__(self, name, a)
         if self.mode is not None:

@@ -11,7 +11,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground, check_h
-from rollingdisk.util.checks import check_real
+from rollingdisk.util.checks import check_real, real_array
 from rollingdisk.util.errors import ParameterError
 
 __all__ = ["SweepGrid", "Perturbation", "BOUND_FACTOR", "GROW_LO", "GROW_HI"]
@@ -38,8 +38,8 @@ class Perturbation:
     tilt: tuple = (0.0,)
 
     def __post_init__(self):
-        k = np.atleast_1d(np.asarray(self.kick, dtype=float))
-        e = np.atleast_1d(np.asarray(self.tilt, dtype=float))
+        k = np.atleast_1d(real_array("kick", self.kick))
+        e = np.atleast_1d(real_array("tilt", self.tilt))
         if k.ndim != 1 or e.ndim != 1:
             raise ParameterError("kick and tilt must be scalars or 1-d sequences")
         n = max(k.size, e.size)
@@ -90,10 +90,10 @@ class SweepGrid:
 
     def __post_init__(self):
         check_ground(self.ground)
-        hs = tuple(check_h(x) for x in np.atleast_1d(np.asarray(self.h, dtype=float)))
+        hs = tuple(check_h(x) for x in np.atleast_1d(real_array("h", self.h)))
         object.__setattr__(self, "h", hs)
         if self.states is not None:
-            s = np.asarray(self.states, dtype=float)
+            s = real_array("states", self.states)
             if s.ndim != 2 or s.shape[1] != 4 or not np.all(np.isfinite(s)):
                 raise ParameterError("states must be a list of finite (theta, omega1, omega2,"
                                      " omega3)")

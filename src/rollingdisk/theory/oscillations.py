@@ -27,7 +27,8 @@ import numpy as np
 from rollingdisk.model.disk import Disk, check_ground, check_h, h_of
 from rollingdisk.model.equations import _reduced_rhs
 from rollingdisk.model.geometry import h_tilde
-from rollingdisk.theory.steady import Omega0_sq, SteadyMotion, _map_domain
+from rollingdisk.theory._points import at_a_point, why_overflow
+from rollingdisk.theory.steady import Omega0_sq, SteadyMotion, _map_domain, _why_no_circle
 from rollingdisk.util.checks import check_real, real_array
 from rollingdisk.util.errors import ParameterError
 
@@ -136,6 +137,7 @@ STABILITY_KINDS = {"varpi2": "rate_sq", "stable": "dimensionless", "varpi": "ang
 # ---------------------------------------------------------------------------------------
 # closed forms in (omega20, omega30): eqs. (40)-(41) and (51)
 # ---------------------------------------------------------------------------------------
+@at_a_point(("h", "theta0", "omega20", "omega30"), why_overflow("40)-(41) / (51"))
 def varpi2_closed_form(h, ground: str, theta0, omega20, omega30):
     """``varpi^2`` at a steady state, eq. (40)-(41) (rough) or eq. (51) (smooth).
 
@@ -148,7 +150,8 @@ def varpi2_closed_form(h, ground: str, theta0, omega20, omega30):
     Returns
     -------
     float or ndarray
-        ``varpi^2``; NaN outside ``h >= 0, |theta0| < pi/2``.
+        ``varpi^2``; NaN outside ``h >= 0, |theta0| < pi/2`` (at a single point, scalars
+        in, a :class:`~rollingdisk.ParameterError` naming the parameter instead).
 
     Notes
     -----
@@ -300,6 +303,7 @@ def varpi2_linearized(motion: SteadyMotion) -> float:
 # ---------------------------------------------------------------------------------------
 # circles in terms of omega30: eqs. (45)-(46) and (55)-(56)
 # ---------------------------------------------------------------------------------------
+@at_a_point(("h", "theta0"), why_overflow("45) / (55"))
 def circle_coefficients(h, ground: str, theta0):
     """``(P0, P1, P2, den)`` with ``varpi^2 = (P2 w^4 + P1 w^2 + P0) / (den w^2)``, ``w = omega30``.
 
@@ -312,7 +316,8 @@ def circle_coefficients(h, ground: str, theta0):
     Returns
     -------
     tuple of ndarray
-        ``(P0, P1, P2, den)``, NaN outside ``h >= 0, |theta0| < pi/2``.
+        ``(P0, P1, P2, den)``, NaN outside ``h >= 0, |theta0| < pi/2`` (at a single
+        point, scalars in, a :class:`~rollingdisk.ParameterError` instead).
 
     Notes
     -----
@@ -345,11 +350,20 @@ def circle_coefficients(h, ground: str, theta0):
     return P0 + out, P1 + out, P2 + out, den + out
 
 
+def _why_no_circle_at(v) -> str:
+    if v["omega30"] == 0.0:
+        return ("omega30 must be non-zero: eqs. (45) / (55) divide by omega30^2 (any "
+                "omega30 != 0 is a steady circle, section 3.2)")
+    return why_overflow("45) / (55")(v)
+
+
+@at_a_point(("h", "theta0", "omega30"), _why_no_circle_at)
 def varpi2_circle(h, ground: str, theta0, omega30):
     """``varpi^2`` of the steady circle with given ``omega30``: eq. (45) corrected / (55).
 
     Arrays in (broadcast), array out; NaN where ``omega30 = 0`` or outside
     ``h >= 0, |theta0| < pi/2``.  Any ``omega30 != 0`` is a steady circle (section 3.2).
+    At a single point (scalars in) those are a :class:`~rollingdisk.ParameterError`.
     """
     h, t, w = np.broadcast_arrays(*(real_array(n, a) for n, a in
                                     (("h", h_of(h)), ("theta0", theta0), ("omega30", omega30))))
@@ -360,20 +374,24 @@ def varpi2_circle(h, ground: str, theta0, omega30):
     return np.where(_map_domain(h, t) & (w != 0), out, np.nan)[()]
 
 
+@at_a_point(("h", "theta0", "r_C"), _why_no_circle)
 def varpi2_rough_rC(h, theta0, r_C):
     """``varpi^2`` of the rough steady circle of radius ``r_C`` (the eq. (47) route).
 
     ``Omega0^2`` from eq. (31) (corrected), ``omega30^2 = Omega0^2 cos^2 theta0``, then
-    eq. (45).  NaN where ``Omega0^2 <= 0`` (no steady motion) or outside the domain.
+    eq. (45).  NaN where ``Omega0^2 <= 0`` (no steady motion) or outside the domain; at a
+    single point (scalars in) a :class:`~rollingdisk.ParameterError` giving the radii
+    that have a steady circle (beyond ``r_C*``, eq. 32).
     """
     h = h_of(h)
-    Om2 = Omega0_sq(h, theta0, r_C)
+    Om2 = Omega0_sq.__wrapped__(h, theta0, r_C)
     with np.errstate(all="ignore"):
         ok = Om2 > 0
         w = np.sqrt(np.where(ok, Om2, np.nan)) * np.cos(theta0)
-        return np.where(ok, varpi2_circle(h, "rough", theta0, w), np.nan)[()]
+        return np.where(ok, varpi2_circle.__wrapped__(h, "rough", theta0, w), np.nan)[()]
 
 
+@at_a_point(("h", "theta0"))
 def critical_omega30_sq(h, ground: str, theta0):
     """The ``varpi^2 = 0`` surface (Figures 6, 8): roots ``(lower, upper)`` in ``omega30^2``.
 
@@ -390,7 +408,9 @@ def critical_omega30_sq(h, ground: str, theta0):
     Notes
     -----
     Circles with ``lower < omega30^2 < upper`` are unstable, all others stable.  Both NaN
-    where there is no real positive root (stable for every ``omega30``).
+    where there is no real positive root (stable for every ``omega30``): an answer, kept
+    at a single point too.  Outside ``0 <= h <= 1e8, |theta0| < pi/2`` a map holds NaN, a
+    single point (scalars in) is a :class:`~rollingdisk.ParameterError`.
     """
     h = h_of(h)
     P0, P1, P2, den = circle_coefficients(h, ground, theta0)
@@ -403,6 +423,7 @@ def critical_omega30_sq(h, ground: str, theta0):
     return np.where(ok, np.maximum(lo, 0.0), np.nan)[()], np.where(ok, hi, np.nan)[()]
 
 
+@at_a_point(("h", "theta0"))
 def stable_for_all_omega30(h, ground: str, theta0):
     """Where every steady circle is stable, whatever ``omega30``: regions (46) / (59).
 
@@ -422,7 +443,8 @@ def stable_for_all_omega30(h, ground: str, theta0):
     ``P2 w^4 + P1 w^2 + P0 > 0`` for all ``w^2 > 0`` iff ``P1 >= 0`` or
     ``Delta = P1^2 - 4 P0 P2 < 0`` (``P0 >= 0``, ``P2 > 0``).  On smooth ground ``Delta < 0``
     is eq. (59): ``3p^4 - 4h~p^3 + 6p^2 - 12h~p - 1 + 4h^2 > 0``.  Boolean array (False
-    outside the domain).
+    outside the domain; a single point outside it, scalars in, is a
+    :class:`~rollingdisk.ParameterError`).
     """
     h_a, t_a = np.broadcast_arrays(real_array("h", h_of(h)), real_array("theta0", theta0))
     lower, upper = critical_omega30_sq(h_a, ground, t_a)  # no positive root: stable for all

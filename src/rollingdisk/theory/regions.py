@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground, check_h, h_of
+from rollingdisk.theory._points import at_a_point
 from rollingdisk.theory.steady import SteadyMotion
 from rollingdisk.util.checks import real_array
 from rollingdisk.util.errors import ParameterError
@@ -70,6 +71,7 @@ def existence_codes(h: float, theta0, r_C) -> np.ndarray:
     return codes
 
 
+@at_a_point(("h", "theta0"))
 def varpi2_zero_surface(h, ground: str, theta0):
     """The roots ``omega30 > 0`` of ``varpi^2 = 0`` (eqs. 45 / 55) at each ``(h, theta0)``.
 
@@ -83,7 +85,9 @@ def varpi2_zero_surface(h, ground: str, theta0):
     -------
     (lower, upper) : tuple of float or ndarray
         ``omega30`` of the lower and the upper sheet (the square roots of
-        :func:`rollingdisk.critical_omega30_sq`); NaN where there is no positive root.
+        :func:`rollingdisk.critical_omega30_sq`); NaN where there is no positive root (an
+        answer, kept at a single point too).  Outside ``0 <= h <= 1e8, |theta0| < pi/2``
+        a single point (scalars in) is a :class:`~rollingdisk.ParameterError`.
         Steady circles with ``lower < |omega30| < upper`` are unstable.
 
     Examples

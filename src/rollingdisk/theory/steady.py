@@ -36,6 +36,7 @@ import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground, check_h, h_of
 from rollingdisk.model.geometry import _inertia, h_tilde
+from rollingdisk.theory._points import at_a_point, why_overflow
 from rollingdisk.util.checks import check_real, real_array
 from rollingdisk.util.errors import ParameterError
 
@@ -479,13 +480,49 @@ def _map_domain(h, theta0):
     return (h >= 0) & (np.abs(theta0) < np.pi / 2)
 
 
+def _point_parts(v):
+    """``N, A, B`` of eq. (31) and ``r_C*`` (eq. 32) at one in-domain point ``v``."""
+    h, theta0 = v["h"], v["theta0"]
+    ht = float(h_tilde(h, theta0))
+    s, c = math.sin(theta0), math.cos(theta0)
+    N, A, B = _rough_Omega0_sq_parts(h, ht, s, c, s / c)
+    return N, A, B, -A / B  # B = 6 (3 + 2 h |tan theta0|) > 0 on the domain
+
+
+def _why_no_Omega0(v) -> str:
+    """Why eq. (31) gives no ``Omega0^2`` at the point ``v`` (the SE tilt, ``r_C = r_C*``)."""
+    N, A, B, r_star = _point_parts(v)
+    if N == 0.0:
+        return ("theta0 is the static-equilibrium tilt tan(theta0) = h~ (eq. 30), where "
+                "Omega0 is free and r_C fixed: theta0 must differ from arctan(h)")
+    if A + B * v["r_C"] == 0.0:
+        return (f"r_C = r_C* = {r_star:.6g} (eq. 32), where the denominator of eq. (31) "
+                f"vanishes: r_C must differ from r_C*")
+    return "the terms of eq. (31) overflow floating-point range here"
+
+
+def _why_no_circle(v) -> str:
+    """Why there is no rough steady circle of radius ``r_C`` at the point ``v``."""
+    N, A, B, r_star = _point_parts(v)
+    D = A + B * v["r_C"]
+    if N == 0.0 or D == 0.0:
+        return _why_no_Omega0(v)
+    rng = _describe_r_range("r_C", r_star, None) if N > 0 else _describe_r_range(
+        "r_C", None, r_star)
+    return (f"no steady circle of this radius: Omega0^2 = {N / D:.6g} (eq. 31) must be "
+            f"positive; at this (h, theta0) steady circles need {rng} (r_C*, eq. 32)")
+
+
+@at_a_point(("h", "theta0", "r_C"), _why_no_Omega0)
 def Omega0_sq(h, theta0, r_C):
     """``Omega0^2`` of the rough steady circle with radius ``r_C`` (eq. 31, corrected).
 
     Arrays in (broadcast), array out.  Negative values mean no steady circle (the dark
     regions of Figure 4); NaN outside the domain (``h < 0``, ``|theta0| >= pi/2``), at the
     SE tilt (where ``Omega0`` is free) and where the denominator vanishes (``r_C = r_C*``).
-    ``theta0 = 0`` is the limit ``theta0 -> 0+``.
+    ``theta0 = 0`` is the limit ``theta0 -> 0+``.  At a single point (scalars in) these
+    are refused instead: :class:`~rollingdisk.ParameterError` naming the parameter and
+    its range (``0 <= h <= 1e8``, ``|theta0| < pi/2``, ``r_C != r_C*``, eq. 32).
     """
     h, theta0, r_C = np.broadcast_arrays(*(real_array(n, a) for n, a in
                                            (("h", h_of(h)), ("theta0", theta0), ("r_C", r_C))))
@@ -500,12 +537,14 @@ def Omega0_sq(h, theta0, r_C):
     return np.where(bad, np.nan, out)[()]
 
 
+@at_a_point(("h", "theta0"), why_overflow("32"))
 def r_C_star(h, theta0):
     """The radius ``r_C*`` where the denominator of eq. (31) vanishes, eq. (32).
 
     ``-cos(theta0) [(3 + 4h^2) tan(theta0) - 6h~] / (6 (3 + 2h~ tan(theta0)))``.  Steady
     circles need ``r_C < r_C*`` where ``tan(theta0) < h~`` and ``r_C > r_C*`` where
-    ``tan(theta0) > h~``.  NaN outside ``h >= 0, |theta0| < pi/2``.
+    ``tan(theta0) > h~``.  NaN outside ``h >= 0, |theta0| < pi/2``; at a single point
+    (scalars in) that is refused (:class:`~rollingdisk.ParameterError`).
     """
     h, theta0 = np.broadcast_arrays(real_array("h", h_of(h)), real_array("theta0", theta0))
     with np.errstate(all="ignore"):
@@ -516,15 +555,18 @@ def r_C_star(h, theta0):
     return np.where(_map_domain(h, theta0), out, np.nan)[()]
 
 
+@at_a_point(("h", "theta0", "r_C"), _why_no_circle)
 def mu_required_map(h, theta0, r_C):
     """``mu_required = |F_t|/F_z = |r_C| Omega0^2`` of the rough steady circles (eqs. 19, 27,
     31): the least static friction coefficient that keeps each circle rolling.
 
     Arrays in (broadcast), array out; NaN where no steady circle has this ``(theta0, r_C)``
     (``Omega0^2 <= 0`` or undefined, see :func:`Omega0_sq`).  A circle survives on Coulomb
-    ground with static coefficient ``mu_s`` where ``mu_required_map(...) < mu_s``.
+    ground with static coefficient ``mu_s`` where ``mu_required_map(...) < mu_s``.  At a
+    single point (scalars in) no circle is a :class:`~rollingdisk.ParameterError` giving
+    the radii that have one (``r_C`` beyond ``r_C*``, eq. 32).
     """
-    Om2 = np.asarray(Omega0_sq(h_of(h), theta0, r_C), dtype=float)
+    Om2 = np.asarray(Omega0_sq.__wrapped__(h_of(h), theta0, r_C), dtype=float)
     r = np.broadcast_to(np.asarray(r_C, dtype=float), Om2.shape)
     with np.errstate(invalid="ignore"):
         return np.where(Om2 > 0, np.abs(r) * Om2, np.nan)[()]
