@@ -191,45 +191,12 @@ def test_simulate_y0_beyond_floating_point_range():
 # ---------------------------------------------------------------------------------------
 import hostile_calls as hc  # noqa: E402
 
-#: Targets whose contract breaks in a module this branch may not edit (being split, or
-#: owned by the files/journal work of issue 36), each with a case below that xfails while
-#: it breaks and fails once it is fixed.  target -> (reason, a breaking (slot, value)); the
-#: arguments in PENDING_SLOTS (all of them where a target is not there) are left out of the
-#: runs above, its other arguments are held like everything else.
-PENDING_TARGETS = {
-    "rollingdisk.scenarios.euler_disk:predicted_exponents": (
-        "scenarios/euler_disk.py (being split) does not check that toy is an EulerDisk "
-        "(AttributeError) nor its window (IndexError)", (("arg", 0), "-1")),
-    "rollingdisk.scenarios.euler_disk:predicted_end_time": (
-        "scenarios/euler_disk.py (being split) does not check toy (AttributeError) and "
-        "returns NaN for alpha_end outside (0, alpha0)", (("arg", 0), "-1")),
-    "rollingdisk.scenarios.euler_disk:run_euler_disk": (
-        "scenarios/euler_disk.py (being split) indexes fit_window unchecked "
-        "(IndexError for np.array(0.3), a string, an empty tuple)",
-        (("kw", "fit_window"), "array(0.3)")),
-    "rollingdisk.scenarios.euler_disk:creep_factor": (
-        "scenarios/euler_disk.py (being split) converts slip, u_s with np.asarray: "
-        "OverflowError for 10**400", (("arg", 0), "10**400")),
-    "rollingdisk.plotting:trajectory_series": (
-        "plotting/plots.py (being split) does not check traj (AttributeError)",
-        (("arg", 0), "-1")),
-    "rollingdisk:toss_ensemble": (
-        "the toss journal (issue 36, files half) opens results unchecked: "
-        "IsADirectoryError for '/', OSError for a 300-character name", (("kw", "results"), "'/'")),
-    "rollingdisk.scenarios.toss:toss_ensemble": (
-        "the toss journal (issue 36, files half), as rollingdisk:toss_ensemble",
-        (("kw", "results"), "long name")),
-    "rollingdisk.sweep:open_sweep": (
-        "the sweep store (issue 36, files half): OSError for a 300-character name",
-        (("arg", 0), "long name")),
-}
-
-PENDING_SLOTS = {
-    "rollingdisk.scenarios.euler_disk:run_euler_disk": {("kw", "fit_window")},
-    "rollingdisk.scenarios.euler_disk:predicted_end_time": {("arg", 0), ("kw", "alpha_end")},
-    "rollingdisk:toss_ensemble": {("kw", "results")},
-    "rollingdisk.scenarios.toss:toss_ensemble": {("kw", "results")},
-}
+#: Targets whose contract is known to break (none today), each with a case below that
+#: xfails while it breaks and fails once it is fixed: target -> (reason, a breaking (slot,
+#: value)); the arguments in PENDING_SLOTS (all of them where a target is not there) are
+#: left out of the runs above, its other arguments are held like everything else.
+PENDING_TARGETS: dict = {}
+PENDING_SLOTS: dict = {}
 
 #: Targets where NaN at a single point is a documented answer, not a refusal.
 NAN_ANSWERS = {

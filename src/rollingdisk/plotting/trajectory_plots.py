@@ -22,7 +22,7 @@ from rollingdisk.plotting.style import (
     disk_of,
     si_factor,
 )
-from rollingdisk.util.errors import ParameterError
+from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["trajectory_series", "plot_paths", "plot_theta", "plot_energy_error",
            "plot_contact_forces", "plot_trajectory", "plot_exact_theta", "plot_rosette",
@@ -36,9 +36,14 @@ def trajectory_series(traj, name: str) -> np.ndarray:
     Works with :class:`rollingdisk.Trajectory` and any object with ``disk``,
     ``ground``, ``t`` and ``y`` of shape ``(n_state, n)``.
     """
+    if not isinstance(name, str):
+        raise ParameterTypeError(f"name must be a string, got {type(name).__name__}")
     value = getattr(traj, name, None)
     if value is not None:
         return np.asarray(value, float)
+    if not all(hasattr(traj, a) for a in ("y", "disk", "ground")):
+        raise ParameterTypeError(f"traj must be a trajectory (with t, y, disk, ground), got "
+                                 f"{type(traj).__name__}")
     from rollingdisk.model import equations as eq
     from rollingdisk.model.state import state_names
 

@@ -64,6 +64,7 @@ from rollingdisk.scenarios.euler_kernels import (
 )
 from rollingdisk.scenarios.euler_predict import (
     _fit_exponents,
+    _window,
     predicted_end_time,
     predicted_exponents,
 )
@@ -199,8 +200,7 @@ def _check_run_arguments(toy, alpha_end, t_max, rtol, atol, max_steps, max_wall_
     if fit_window is None:
         fit_window = (FIT_WINDOW_AIR if toy.c_air > 0 or toy.c_boundary_layer > 0
                       else FIT_WINDOW)
-    lo, hi = (check_real("fit_window[0]", fit_window[0], low=0.0, low_open=True),
-              check_real("fit_window[1]", fit_window[1], low=0.0, low_open=True))
+    lo, hi = _window("fit_window", fit_window)
     if not lo < hi < toy.alpha0:
         raise ParameterError(f"fit_window must satisfy 0 < lo < hi < alpha0 = "
                              f"{toy.alpha0:g}, got {fit_window!r}")

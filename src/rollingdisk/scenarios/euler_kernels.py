@@ -13,6 +13,7 @@ from rollingdisk.model import coulomb as _cl
 from rollingdisk.model.disk import Disk
 from rollingdisk.model.geometry import _geometry
 from rollingdisk.scenarios.euler_toy import EulerDisk
+from rollingdisk.util.checks import check_real, real_array
 
 __all__ = ["creep_factor"]
 
@@ -24,7 +25,8 @@ def creep_factor(slip, u_s):
     ``f(s) = 1 - (1 - s)^3`` for ``s < 1`` and 1 beyond: ``f(s)/s = (3 - 3 s + s^2)`` /
     ``u_s`` below saturation (finite at ``u = 0``, slope ``3/u_s = k/mu``), ``1/|u|`` above.
     """
-    slip = np.asarray(slip, dtype=float)
+    slip = real_array("slip", slip)
+    u_s = check_real("u_s", u_s, low=0.0, low_open=True)
     s = slip / u_s
     return np.where(s < 1.0, (3.0 - 3.0 * s + s * s) / u_s,
                     1.0 / np.where(s < 1.0, 1.0, slip))[()]

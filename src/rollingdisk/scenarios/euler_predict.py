@@ -10,7 +10,8 @@ import numpy as np
 
 from rollingdisk.model.geometry import _inertia
 from rollingdisk.scenarios.euler_toy import EXPONENT_NAMES, EulerDisk
-from rollingdisk.util.errors import ParameterError
+from rollingdisk.util.checks import check_int, check_real
+from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["predicted_end_time", "predicted_exponents"]
 
@@ -73,6 +74,23 @@ def _no_dissipation(toy: EulerDisk) -> bool:
     return toy.rolling_resistance == 0.0 and toy.c_air == 0.0 and toy.c_boundary_layer == 0.0
 
 
+def _window(name: str, window) -> tuple[float, float]:
+    """``(lo, hi)`` of a window of tilts given as a pair of positive numbers, or raise
+    naming ``name``."""
+    if isinstance(window, (str, bytes)) or not hasattr(window, "__len__") \
+            or getattr(window, "ndim", 1) != 1 or len(window) != 2:
+        raise ParameterTypeError(f"{name} must be a pair (lo, hi) of tilts in radians, got "
+                                 f"{type(window).__name__} {window!r:.60}")
+    return (check_real(f"{name}[0]", window[0], low=0.0, low_open=True),
+            check_real(f"{name}[1]", window[1], low=0.0, low_open=True))
+
+
+def _check_toy(toy) -> EulerDisk:
+    if not isinstance(toy, EulerDisk):
+        raise ParameterTypeError(f"toy must be an EulerDisk, got {type(toy).__name__}")
+    return toy
+
+
 def predicted_end_time(toy: EulerDisk, alpha_end: float = 1e-3) -> tuple[float, float]:
     """The adiabatic decay along the steady family from ``alpha0``: the time it reaches
     ``alpha_end`` and the time ``t0`` it reaches ``alpha = 0`` (units ``sqrt(a/g)``).
@@ -82,6 +100,9 @@ def predicted_end_time(toy: EulerDisk, alpha_end: float = 1e-3) -> tuple[float, 
     earlier.  ``(inf, inf)`` without dissipation."""
     from scipy.integrate import quad
 
+    toy = _check_toy(toy)
+    # below 1e-12 rad the quadrature of the tail meets 0 * inf (subnormal tilts)
+    alpha_end = check_real("alpha_end", alpha_end, low=1e-12, high=toy.alpha0, high_open=True)
     if _no_dissipation(toy):
         return math.inf, math.inf
     f = _decay_integrand(toy)
@@ -105,7 +126,9 @@ def predicted_exponents(toy: EulerDisk, window=(2e-3, 2e-2), n: int = 40) -> dic
     """
     from scipy.integrate import quad
 
-    lo, hi = window
+    toy = _check_toy(toy)
+    lo, hi = _window("window", window)
+    n = check_int("n", n, low=2, high=10_000)
     if not (0.0 < lo < hi < toy.alpha0):
         raise ParameterError(f"window must satisfy 0 < lo < hi < alpha0 = {toy.alpha0:g}, "
                              f"got {window!r}")

@@ -276,8 +276,14 @@ def open_sweep(path):
     import xarray as xr
 
     path = Path(os.fspath(path))
-    if not path.exists():
-        raise ParameterError(f"path: no sweep at {str(path)!r}")
-    if path.suffix == ".nc":
-        return xr.load_dataset(path)
-    return xr.open_zarr(path).load()
+    try:
+        if not path.exists():
+            raise ParameterError(f"path: no sweep at {str(path)!r}")
+        if path.suffix == ".nc":
+            return xr.load_dataset(path)
+        return xr.open_zarr(path).load()
+    except (OSError, KeyError, ValueError) as exc:  # a name too long, or not a sweep store
+        if isinstance(exc, ParameterError):
+            raise
+        raise ParameterError(f"path: {str(path)[:80]!r} is no sweep store we can read "
+                             f"({type(exc).__name__}: {str(exc)[:120]})") from None
