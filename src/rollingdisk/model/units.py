@@ -13,7 +13,9 @@ this module is where physical input comes in and physical output goes out:
   function a command line calls to turn its options into a :class:`Disk`;
 * :data:`KINDS` and :func:`si_view`: what each kind of quantity (time, length, speed, ...)
   is measured in, in the paper's units and in SI, and the conversion through a disk's
-  physical scale; :func:`si_fields` gives the SI view of any result that has one.
+  physical scale; :func:`si_fields` gives the SI view of any result that has one;
+* the way in, a dimensional input (a time, a speed, ...) in the paper's units, is
+  :mod:`rollingdisk.model.inputs`.
 """
 
 from __future__ import annotations
@@ -47,6 +49,8 @@ _DIMENSION_WORDS = {
     "[length] / [time] ** 2": "an acceleration", "[length] / [time]": "a speed",
     "dimensionless": "a plain number", "[length] ** 2": "an area",
     "[length] ** 3": "a volume", "[temperature]": "a temperature",
+    "1 / [time]": "an angular speed (or a rate)", "[time] / [length]": "an inverse speed",
+    "[mass] * [length] ** 2 / [time]": "an angular momentum (a moment per angular speed)",
 }
 
 
@@ -58,8 +62,31 @@ def _registry():
     return pint.UnitRegistry()
 
 
+def _is_quantity(value) -> bool:
+    """Whether ``value`` is a pint quantity (of any registry)."""
+    return hasattr(value, "dimensionality") and hasattr(value, "to") and \
+        hasattr(value, "magnitude")
+
+
+def _from_quantity(q, dim: str, si_unit: str, expect: str, name: str) -> float:
+    """A pint quantity of dimension ``dim`` as a float in ``si_unit``."""
+    got = str(q.dimensionality)
+    if got != dim:
+        words = _DIMENSION_WORDS.get(got, f"of dimension {got}")
+        raise ParameterError(f"{name} must be {expect}; got {q!r}, which is {words}")
+    try:
+        return float(q.to(si_unit).magnitude)
+    except OverflowError:
+        return math.inf
+    except TypeError:
+        raise ParameterTypeError(f"{name} must be {expect}, got {q!r} (not one number)") \
+            from None
+
+
 def _parse(value, kind: str, name: str) -> float:
     dim, si_unit, expect = _EXPECT[kind]
+    if _is_quantity(value):
+        value = _from_quantity(value, dim, si_unit, expect, name)
     if isinstance(value, bool) or not isinstance(value, (str, int, float, np.integer,
                                                          np.floating)):
         raise ParameterTypeError(f"{name} must be {expect}, got {type(value).__name__} "
@@ -94,6 +121,14 @@ _MAX_TEXT = 200
 
 
 def _parse_with_unit(text, dim, si_unit, expect, name, shown) -> float:
+    return _quantity_of(text, dim, si_unit, expect, name, shown)[0]
+
+
+def _quantity_of(text, dim, si_unit, expect, name, shown) -> tuple[float, str]:
+    """``text`` read by pint, in ``si_unit``; ``dim`` and ``si_unit`` may be tuples of
+    alternatives (the one that matched is returned beside the value)."""
+    dims = (dim,) if isinstance(dim, str) else tuple(dim)
+    units = (si_unit,) if isinstance(si_unit, str) else tuple(si_unit)
     if not any(ch.isdigit() for ch in text):
         raise ParameterError(f"{name} must be {expect}: a number with a unit, got {shown}")
     if len(text) > _MAX_TEXT or _NESTED_POWER.search(text) or any(
@@ -114,13 +149,14 @@ def _parse_with_unit(text, dim, si_unit, expect, name, shown) -> float:
     if not isinstance(q, ureg.Quantity):  # e.g. "2*3" is a plain number
         q = ureg.Quantity(float(q), "")
     got = str(q.dimensionality)
-    if got != dim:
+    if got not in dims:
         words = _DIMENSION_WORDS.get(got, f"of dimension {got}")
         raise ParameterError(f"{name} must be {expect}; got {shown}, which is {words}")
+    unit = units[dims.index(got)]
     try:
-        return float(q.to(si_unit).magnitude)
+        return float(q.to(unit).magnitude), unit
     except OverflowError:
-        return math.inf
+        return math.inf, unit
 
 
 def parse_length(value, name: str = "length") -> float:
@@ -525,3 +561,4 @@ def result_html(title: str, disk: Disk | None, values: dict, kinds: dict,
         rows.append(tuple(row))
     header = ("field", "value", "unit") + (("SI value", "SI unit") if si else ())
     return html_table(title, header, rows, note)
+
