@@ -37,6 +37,7 @@ def configure(sub):
                    help=f"frames per second in [{FPS_RANGE[0]}, {FPS_RANGE[1]}] (default 15)")
     dpi_arg(p, 70)
     p.add_argument("--out", required=True, help="motion.gif (or .mp4 when ffmpeg exists)")
+    p.set_defaults(_echo_stderr=True)  # stdout is the path written
     return p
 
 

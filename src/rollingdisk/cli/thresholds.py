@@ -41,7 +41,7 @@ def configure(sub):
         "Dimensionless, as squared angular speeds in units g/a (m = a = g = 1); for a disk "
         "with a physical size (--disk, --radius/--diameter with --thickness) also as speeds "
         "in SI units: the straight-rolling threshold as the speed of C in m/s.")
-    add_disk_options(p, required=True)
+    add_disk_options(p, required=True, positional=True)
     add_json_arg(p)
     return p
 

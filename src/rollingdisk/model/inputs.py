@@ -43,10 +43,11 @@ __all__ = ["INPUT_KINDS", "PAPER_SUFFIX", "read_input", "from_si", "to_paper"]
 INPUT_KINDS: dict[str, tuple[tuple[str, ...], tuple[str, ...], str, str, str]] = {
     "time": (("[time]",), ("s",), "seconds", "sqrt(a/g)", "a time"),
     "length": (("[length]",), ("m",), "metres", "a", "a length"),
-    "speed": (("[length] / [time]",), ("m/s",), "m/s", "sqrt(a g)", "a speed"),
-    "angular_speed": (("1 / [time]",), ("rad/s",), "rad/s", "sqrt(g/a)", "an angular speed"),
+    "speed": (("[length] / [time]",), ("m/s",), "metres per second", "sqrt(a g)", "a speed"),
+    "angular_speed": (("1 / [time]",), ("rad/s",), "radians per second", "sqrt(g/a)",
+                      "an angular speed"),
     "rolling_rate": (("1 / [time]", "[length] / [time]"), ("rad/s", "m/s"),
-                     "rad/s, or m/s for the speed of C", "sqrt(g/a)",
+                     "radians per second; or 0.3m/s, the speed of C", "sqrt(g/a)",
                      "an angular speed or a speed"),
     "inverse_speed": (("[time] / [length]",), ("s/m",), "s/m", "1/sqrt(a g)",
                       "an inverse speed"),
@@ -207,13 +208,15 @@ def to_paper(disk: Disk | None, kind: str, value, name: str = "value") -> float:
         if not scaled:
             return x
         text = str(value).strip()
+        sep = "" if name.endswith("=") else " "  # "--state omega3=2"
         raise ParameterError(
-            f"{name} {text} is ambiguous with a physical disk: write {name} {text}"
-            f"{units[0].replace('*', '')} ({words}) or {name} {text}{PAPER_SUFFIX} (paper "
-            f"units, {paper})")
+            f"{name}{sep}{text} is ambiguous with a physical disk: write {name}{sep}{text}"
+            f"{units[0].replace('*', '')} ({words}) or {name}{sep}{text}{PAPER_SUFFIX} "
+            f"(paper units, {paper})")
     if not scaled:
+        sep = "" if name.endswith("=") else " "
         raise ParameterError(
-            f"{name} {value} has a unit: it needs a disk with a physical size (--disk, "
+            f"{name}{sep}{value} has a unit: it needs a disk with a physical size (--disk, "
             f"--radius or --diameter; Disk(radius=...)); without one give it in the paper's "
             f"units ({paper}) as a plain number")
     return float(from_si(disk, _SI_KIND[unit], x))
