@@ -3,7 +3,7 @@
 
     $ rollingdisk animate --theta0 30deg --Omega0 2 --out motion.gif
     $ rollingdisk animate --h 0.3 --theta0 0.5 --rC 1 --kick 0.05 --t-end 40 --out m.mp4
-    $ rollingdisk animate --disk cd --theta0 30deg --Omega0 2 --out cd.gif
+    $ rollingdisk animate --disk cd --theta0 30deg --Omega0 10rad/s --t-end 2s --out cd.gif
 """
 
 from __future__ import annotations

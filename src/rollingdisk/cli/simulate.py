@@ -6,7 +6,7 @@ motion or any state, on rough, smooth or Coulomb ground.
           --out run.csv --json
     $ rollingdisk simulate --ground coulomb --mu 0.3 --h 0.1 --theta0 0.3 --Omega0 2 \\
           --t-end 20
-    $ rollingdisk simulate --disk euro-1 --theta0 30deg --Omega0 2 --t-end 100 --out c.csv
+    $ rollingdisk simulate --disk euro-1 --theta0 30deg --Omega0 30rad/s --t-end 2s --out c.csv
 """
 
 from __future__ import annotations

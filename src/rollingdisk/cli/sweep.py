@@ -6,8 +6,8 @@ per-trajectory summaries next to the closed-form varpi^2 (docs/sweeps.md).
     $ rollingdisk sweep --ground smooth --h 0:0.5:6 --omega0 0.3:2:10 --t-end 50 --out s.nc
     $ rollingdisk sweep --ground rough --theta0 0.5 --omega30 1:3:5 --t-end 100 --basin \\
           --kick 0.5 --out basin.zarr
-    $ rollingdisk sweep --ground rough --disk euro-1 --theta0 0.3:1.2:20 --omega30 1:3:20 \\
-          --t-end 100 --out coin.zarr
+    $ rollingdisk sweep --ground rough --disk euro-1 --theta0 0.3:1.2:20 \\
+          --omega30 30rad/s:90rad/s:20 --t-end 3s --out coin.zarr
 """
 
 from __future__ import annotations
@@ -122,9 +122,8 @@ def _range(name: str, kind: str, option: str | None = None):
 def _grid(args):
     from rollingdisk.sweep import SweepGrid
 
-    if _physical(args):
-        disk_from_args(args)  # converts the dimensional values with the disk's scale
-    else:
+    h = _h_values(args)  # with a physical disk, also its scale converts the values with units
+    if not _physical(args):
         resolve_inputs(args, None)
     if args.omega0 is not None and args.theta0 is not None:
         raise CLIError("rollingdisk sweep: error: --omega0 (straight lines) fixes theta0 = "
@@ -135,7 +134,7 @@ def _grid(args):
     if args.basin and args.perturb is not None:
         raise CLIError("rollingdisk sweep: error: --basin bisects the kick; drop --perturb")
     second = {k: getattr(args, k) for k in ("omega30", "Omega0", "omega0")}
-    return SweepGrid(args.ground, h=_h_values(args), theta0=args.theta0 or (), r_C=args.rC,
+    return SweepGrid(args.ground, h=h, theta0=args.theta0 or (), r_C=args.rC,
                      **second)
 
 

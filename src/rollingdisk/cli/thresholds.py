@@ -4,6 +4,7 @@ for a disk with a physical size, the critical speeds in SI units beside them.
     $ rollingdisk thresholds --h 0.17
     $ rollingdisk thresholds --h 0.5 --json
     $ rollingdisk thresholds --disk euro-1
+    $ rollingdisk thresholds euro-1
     $ rollingdisk thresholds --diameter 23.25mm --thickness 2.33mm --json
 """
 
