@@ -7,7 +7,7 @@ units of ``sqrt(a/g)``, speeds in ``sqrt(a g)``, angular speeds in ``sqrt(g/a)``
 (radius, mass, gravity); its ``*_to_si`` methods are the one place where dimensionless
 numbers become SI numbers, and its ``*_from_si`` methods the way back.  Its ``radius``,
 ``mass`` and ``gravity`` may be given as text with a unit (``"11.625mm"``) or as pint
-quantities (``Quantity(7.5, "g")``), converted to SI (:mod:`rollingdisk.model.units`).
+quantities (``Quantity(7.5, "g")``), converted to SI (:mod:`rollingdisk.model.quantity`).
 """
 
 from __future__ import annotations
@@ -80,10 +80,10 @@ def _si_inputs(disk) -> None:
     for name in ("radius", "mass", "gravity"):
         value = getattr(disk, name)
         if isinstance(value, str) or hasattr(value, "dimensionality"):
-            from rollingdisk.model import units
+            from rollingdisk.model import quantity
 
-            parse = {"radius": units.parse_length, "mass": units.parse_mass,
-                     "gravity": units.parse_acceleration}[name]
+            parse = {"radius": quantity.parse_length, "mass": quantity.parse_mass,
+                     "gravity": quantity.parse_acceleration}[name]
             object.__setattr__(disk, name, parse(value, name))
 
 
@@ -141,7 +141,7 @@ class Disk:
     def from_dimensions(cls, radius: float, thickness: float, mass: float | None = None,
                         gravity: float = STANDARD_GRAVITY) -> Disk:
         """A disk from its physical radius and full thickness ``2h a`` (both in metres)."""
-        from rollingdisk.model.units import parse_length
+        from rollingdisk.model.quantity import parse_length
 
         radius = check_real("radius", _plain(radius, parse_length, "radius"), low=0.0,
                             low_open=True)

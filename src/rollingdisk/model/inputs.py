@@ -24,10 +24,8 @@ import math
 
 import numpy as np
 
-from rollingdisk.model.disk import Disk
-from rollingdisk.model.units import (
+from rollingdisk.model.quantity import (
     _DIMENSION_WORDS,
-    KINDS,
     _from_quantity,
     _is_quantity,
     _quantity_of,
@@ -134,7 +132,7 @@ def read_input(kind: str, value, name: str = "value") -> tuple[str, float, str |
     return how, x, unit
 
 
-def from_si(disk: Disk, kind: str, value):
+def from_si(disk, kind: str, value):
     """``value`` (SI, a number or an array) of ``kind`` (a key of :data:`KINDS` or of
     :data:`INPUT_KINDS`) in the paper's units: the inverse of :func:`to_si`.
 
@@ -160,17 +158,18 @@ def from_si(disk: Disk, kind: str, value):
         return value / disk.speed_from_si(1.0)
     if kind == "moment_per_rate":  # units m a^(3/2) g^(1/2) = (m g a) / sqrt(g/a)
         return disk.energy_from_si(disk.angular_speed_to_si(value))
-    raise ParameterError(f"kind must be one of {sorted(set(KINDS) | set(INPUT_KINDS))}, "
-                         f"got {kind!r}")
+    raise ParameterError(f"kind must be a kind of quantity of rollingdisk.model.units.KINDS "
+                         f"or {sorted(INPUT_KINDS)}, got {kind!r}")
 
 
-def to_paper(disk: Disk | None, kind: str, value, name: str = "value") -> float:
+def to_paper(disk, kind: str, value, name: str = "value") -> float:
     """A dimensional input in the paper's units, by the rule of this module (top).
 
     Parameters
     ----------
     disk : Disk or None
-        The disk whose physical scale converts SI input (None: a disk without one).
+        The disk whose physical scale converts SI input (None: a disk without one).  (This
+        module imports no Disk: :class:`rollingdisk.Disk` calls it.)
     kind : str
         A key of :data:`INPUT_KINDS` (``"time"``, ``"length"``, ``"speed"``,
         ``"angular_speed"``, ``"rolling_rate"``, ...).
