@@ -7,9 +7,9 @@ this module is where physical input comes in and physical output goes out:
   :mod:`rollingdisk.model.quantity`, which imports no disk): a string with a unit
   (``"23.25mm"``, ``"7.5g"``, ``"9.81m/s^2"``, ``"0.9in"``), a pint quantity or a plain
   number (taken as SI) -> a float in SI units.  Parsed by pint (imported only when a unit
-  is written, so ``import rollingdisk`` stays light); wrong dimensions, non-positive values, overflow
-  and unknown units raise :class:`~rollingdisk.util.errors.ParameterError` naming the
-  option and what it expects;
+  is written, so ``import rollingdisk`` stays light); wrong dimensions, non-positive
+  values, overflow and unknown units raise
+  :class:`~rollingdisk.util.errors.ParameterError` naming the option and what it expects;
 * :data:`DISKS`: named everyday disks with their sources; :func:`disk_from_options`, the one
   function a command line calls to turn its options into a :class:`Disk`;
 * :data:`KINDS` and :func:`si_view`: what each kind of quantity (time, length, speed, ...)
