@@ -85,9 +85,11 @@ def test_cli_atlas_is_a_thin_wrapper(tmp_path, monkeypatch, capsys):
         return atlas.AtlasResult(tmp_path, tmp_path / "index.html", (), h)
 
     monkeypatch.setattr(atlas, "build_atlas", fake)
-    assert main(["atlas", "--out", str(tmp_path), "--quick"]) == 0
+    assert main(["atlas", "--out", str(tmp_path), "--quick", "--progress"]) == 0
     assert main(["atlas", "--h", "0.3", "--out", str(tmp_path), "--quiet"]) == 0
-    assert calls == [(0.17, str(tmp_path), True, True), (0.3, str(tmp_path), False, False)]
+    assert main(["atlas", "--h", "0.3", "--out", str(tmp_path)]) == 0  # stderr no terminal
+    assert calls == [(0.17, str(tmp_path), True, True), (0.3, str(tmp_path), False, False),
+                     (0.3, str(tmp_path), False, False)]
     assert capsys.readouterr().out.strip().endswith("index.html")
 
 

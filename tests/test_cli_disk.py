@@ -121,28 +121,28 @@ def test_dimensionless_thresholds_unchanged(capsys):
 
 # ------------------------------------------------------- every command: SI converts back
 def test_steady_json_converts_back(capsys):
-    d = run_json(capsys, "steady", *DIMS, "--theta0", "30deg", "--Omega0", "2")
+    d = run_json(capsys, "steady", *DIMS, "--theta0", "30deg", "--Omega0", "2a")
     assert check_si(d, SCALE, at_least=8) >= 8
     assert d["h"] == pytest.approx(0.08) and "F_y_si" in d and "period_si" in d
     d = run_json(capsys, "steady", "--disk", "us-quarter", "--motion", "straight",
-                 "--omega0", "1")
+                 "--omega0", "1a")
     assert d["v_C_si"] == pytest.approx(math.sqrt(0.02426 / 2 * G0), rel=1e-12)
 
 
 def test_steady_text_has_si_column(capsys):
-    assert main(["steady", *DIMS, "--theta0", "30deg", "--Omega0", "2"]) == 0
+    assert main(["steady", *DIMS, "--theta0", "30deg", "--Omega0", "2a"]) == 0
     out = capsys.readouterr().out
     assert "rad/s" in out and re.search(r"period .* s ", out) and "radius 12.5 mm" in out
 
 
 @pytest.mark.parametrize("extra", [
-    ["--theta0", "0.4", "--Omega0", "3", "--kick", "0.05"],
-    ["--ground", "smooth", "--state", "theta=0.3,omega3=2"],
-    ["--ground", "coulomb", "--mu", "0.6", "--theta0", "0.4", "--Omega0", "3", "--kick",
-     "0.3", "--rolling-resistance", "0.01", "--pivot", "0.005"],
+    ["--theta0", "0.4", "--Omega0", "3a", "--kick", "0.05a"],
+    ["--ground", "smooth", "--state", "theta=0.3,omega3=2a"],
+    ["--ground", "coulomb", "--mu", "0.6", "--theta0", "0.4", "--Omega0", "3a", "--kick",
+     "0.3a", "--rolling-resistance", "0.01a", "--pivot", "0.005a"],
 ])
 def test_simulate_json_converts_back(capsys, extra):
-    d = run_json(capsys, "simulate", *DIMS, *extra, "--t-end", "3")
+    d = run_json(capsys, "simulate", *DIMS, *extra, "--t-end", "3a")
     check_si(d, SCALE, at_least=1)
     assert d["t_end_si"] == pytest.approx(d["t_end"] * math.sqrt(SCALE["a"] / SCALE["g"]))
     for x in d.get("transitions", []):
@@ -152,7 +152,7 @@ def test_simulate_json_converts_back(capsys, extra):
 def test_simulate_csv_in_si_is_the_dimensionless_run_scaled(capsys, tmp_path):
     """Same h, same run: the SI CSV is the dimensionless CSV times each column's factor;
     the names stay plain (genfromtxt names=True) and the units are in a comment line."""
-    start = ["--theta0", "0.4", "--Omega0", "3", "--kick", "0.05", "--t-end", "3"]
+    start = ["--theta0", "0.4", "--Omega0", "3a", "--kick", "0.05a", "--t-end", "3a"]
     si_csv, plain_csv = tmp_path / "si.csv", tmp_path / "plain.csv"
     run_json(capsys, "simulate", *DIMS, *start, "--out", str(si_csv))
     run_json(capsys, "simulate", "--h", "0.08", *start, "--out", str(plain_csv))
@@ -175,8 +175,8 @@ def test_simulate_csv_in_si_is_the_dimensionless_run_scaled(capsys, tmp_path):
 
 def test_coulomb_length_with_a_unit(capsys, tmp_path):
     d = run_json(capsys, "simulate", "--ground", "coulomb", "--mu", "0.5", *DIMS,
-                 "--theta0", "0.4", "--Omega0", "3", "--rolling-resistance", "25um",
-                 "--t-end", "1", "--out", str(tmp_path / "c.csv"))
+                 "--theta0", "0.4", "--Omega0", "3a", "--rolling-resistance", "25um",
+                 "--t-end", "1a", "--out", str(tmp_path / "c.csv"))
     assert d["rolling_resistance"] == pytest.approx(25e-6 / SCALE["a"], rel=1e-12)
     assert d["rolling_resistance_si"] == pytest.approx(25e-6, rel=1e-12)
     data = np.genfromtxt(tmp_path / "c.csv", delimiter=",", names=True)
@@ -184,7 +184,7 @@ def test_coulomb_length_with_a_unit(capsys, tmp_path):
 
 
 def test_exact_json_converts_back(capsys):
-    d = run_json(capsys, "exact", *DIMS, "--theta0", "0.4", "--Omega0", "3", "--kick", "0.3")
+    d = run_json(capsys, "exact", *DIMS, "--theta0", "0.4", "--Omega0", "3a", "--kick", "0.3a")
     assert d["status"] == "bounded"
     check_si(d, SCALE, at_least=4)
     assert d["period_si"] == pytest.approx(d["period"] * math.sqrt(SCALE["a"] / SCALE["g"]))
@@ -192,12 +192,12 @@ def test_exact_json_converts_back(capsys):
 
 def test_sweep_json_with_a_disk(capsys, tmp_path):
     d = run_json(capsys, "sweep", "--ground", "rough", *DIMS, "--theta0", "0.5",
-                 "--omega30", "1.5", "--t-end", "2", "--method", "dop853", "--workers", "1",
+                 "--omega30", "1.5a", "--t-end", "2a", "--method", "dop853", "--workers", "1",
                  "--out", str(tmp_path / "s.nc"))
     assert d["n"] == 1 and d["h"] == pytest.approx(0.08)
     check_si(d, SCALE, at_least=1)
     assert main(["sweep", "--ground", "rough", "--disk", "euro-1", "--h", "0:1:3",
-                 "--theta0", "0.5", "--omega30", "1.5", "--t-end", "2", "--out",
+                 "--theta0", "0.5", "--omega30", "1.5a", "--t-end", "2a", "--out",
                  str(tmp_path / "t.nc")]) == 2
     err = capsys.readouterr().err
     assert len(err.strip().splitlines()) == 1 and "--h A:B:N" in err
@@ -223,7 +223,7 @@ def test_map_and_animate_take_a_disk(capsys, tmp_path):
     png, gif = tmp_path / "m.png", tmp_path / "a.gif"
     assert main(["map", "--ground", "rough", "--disk", "euro-1", "--kind", "existence",
                  "--out", str(png), "--dpi", "20"]) == 0
-    assert main(["animate", *DIMS, "--theta0", "30deg", "--Omega0", "2", "--t-end", "1",
+    assert main(["animate", *DIMS, "--theta0", "30deg", "--Omega0", "2a", "--t-end", "1a",
                  "--frames", "2", "--dpi", "20", "--out", str(gif)]) == 0
     err = capsys.readouterr().err
     assert "radius 12.5 mm" in err and "rad/s" in err

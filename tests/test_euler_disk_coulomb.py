@@ -61,7 +61,7 @@ def test_creep_runs_approach_the_coulomb_end_time_as_k_grows():
 
 def test_cli_friction_coulomb(capsys):
     args = ["euler-disk", "--friction", "coulomb", "--mu", "5", "--rolling-resistance",
-            "0.01", "--alpha0", "0.1", "--quiet"]
+            "0.01a", "--alpha0", "0.1", "--quiet"]
     assert main([*args, "--json"]) == 0
     s = json.loads(capsys.readouterr().out)
     assert (s["status"], s["end"]) == ("completed", "fell-flat")

@@ -306,9 +306,12 @@ def _args(argv):
 
 
 def test_command_options():
+    from rollingdisk.explore.command import _start_h
+
     args = _args([])
     assert (args.h, args.ground, args.port, args.host, args.no_browser) == (
-        rd.DEFAULT_H, "rough", 8765, None, False)
+        None, "rough", 8765, None, False)
+    assert _start_h(args) == rd.DEFAULT_H  # no disk given: the default h
     assert args.handler is run
     with pytest.raises(SystemExit):
         _args(["--port", "70000"])

@@ -163,7 +163,7 @@ def test_frequency_plot(run):
     assert x[-1] == pytest.approx(0.0, abs=1e-12) and y[-1] == pytest.approx(f[-1])
 
 
-CLI = ["euler-disk", "--quiet", "--alpha0", "0.05", "--rolling-resistance", "5e-3"]
+CLI = ["euler-disk", "--quiet", "--alpha0", "0.05", "--rolling-resistance", "5e-3a"]
 
 
 def test_cli_sound_and_air_laws(tmp_path, capsys):

@@ -1,9 +1,12 @@
-"""Argument helpers shared by the commands: angles, checked numbers, the disk (``--h``,
-``--disk``, ``--radius`` ...), the options that name a steady motion, ``--state`` with
-``--perturb`` / ``--kick``, tolerances and ``--out``.
+"""Argument helpers shared by the commands: angles, checked numbers, dimensional values with
+units, the disk (``--h``, ``--disk``, ``--radius`` ...), the options that name a steady
+motion, ``--state`` with ``--perturb`` / ``--kick``, tolerances, progress and ``--out``.
 
 Every number is checked when the command line is read, with the library's own checks (same
-message), so that a bad value is refused before any work.
+message), so that a bad value is refused before any work.  A dimensional value (a time, a
+length, a speed, an angular speed: :func:`quantity`) is read then too, and converted to the
+paper's units once the disk is known (:func:`resolve_inputs`, called by
+:func:`disk_from_args`), by the rule of :mod:`rollingdisk.model.inputs` (:data:`UNITS_RULE`).
 """
 
 from __future__ import annotations
@@ -20,7 +23,17 @@ __all__ = ["CLIError", "parse_angle", "real", "integer", "positive_int", "H", "T
            "SIMULATE_T_END_MAX", "RTOL_RANGE", "add_motion_args", "add_state_arg",
            "add_perturbation_args", "add_tolerance_args", "motion_from_args",
            "start_from_args", "initial_state", "t_end_arg", "add_disk_options",
-           "disk_from_args", "DISK_OPTIONS", "length_coefficient", "resolve_length"]
+           "disk_from_args", "DISK_OPTIONS", "length_coefficient", "resolve_length", "quantity",
+           "quantity_range", "resolve_inputs", "echo_inputs", "UNITS_RULE",
+           "add_progress_args", "show_progress", "alias"]
+
+#: The rule for dimensional values, as every --help states it (the disk group's text).
+UNITS_RULE = ("Dimensional values (times, lengths, speeds, angular speeds): without a "
+              "physical disk, plain numbers in the paper's units (m = a = g = 1); with one "
+              "(--disk, --radius/--diameter), write the unit: SI or any unit pint reads "
+              "(--t-end 2s, --rC 5cm, --Omega0 30rad/s, --omega0 0.3m/s), or the suffix a "
+              "for the paper's units (--t-end 20a); a plain number is then refused as "
+              "ambiguous. The text output echoes each conversion.")
 
 #: Longest simulated time of ``sweep`` and ``animate`` (many runs; frames sampling one run).
 T_END_MAX = 1e4
@@ -101,6 +114,193 @@ def integer(name: str, low: int | None = None, high: int | None = None):
     return parse
 
 
+class _Input(float):
+    """A dimensional value as read from the command line, before the disk is known: its
+    float value is the number typed (NaN for one with a unit), :func:`resolve_inputs` turns
+    it into a plain float in the paper's units."""
+
+    text: str
+    kind: str
+    name: str
+    option: str
+    how: str
+    bounds: dict
+
+
+def _make_input(value: float, text: str, kind: str, name: str, option: str, how: str,
+                bounds: dict) -> _Input:
+    x = _Input(value)
+    x.text, x.kind, x.name, x.option, x.how, x.bounds = text, kind, name, option, how, bounds
+    return x
+
+
+def quantity(name: str, kind: str, option: str | None = None, **bounds):
+    """An argparse type: a dimensional value (``kind``, a key of
+    :data:`rollingdisk.model.inputs.INPUT_KINDS`), a plain number, a number with the
+    suffix ``a`` (the paper's units) or a number with a unit (``2s``, ``5cm``, ``30rad/s``),
+    checked when read (a plain number as :func:`real` checks it, same message) and
+    converted by :func:`resolve_inputs` once the disk is known."""
+    plain = real(name, **bounds)
+    option = option or f"--{name.replace('_', '-')}"
+
+    def parse(text: str) -> _Input:
+        from rollingdisk.model.inputs import read_input
+
+        try:
+            float(text)
+        except ValueError:
+            pass
+        else:
+            return _make_input(plain(text), text, kind, name, option, "bare", bounds)
+        try:
+            how, x, _ = read_input(kind, text, option)
+            if how == "paper":
+                x = check_real(name, x, **bounds)
+        except INPUT_ERRORS as exc:
+            raise argparse.ArgumentTypeError(str(exc)) from None
+        return _make_input(x if how == "paper" else math.nan, text, kind, name, option, how,
+                           bounds)
+
+    return parse
+
+
+def _resolve_one(value, disk, echo: list):
+    """One value of :func:`quantity` in the paper's units (anything else unchanged)."""
+    if not isinstance(value, _Input):
+        return value
+    from rollingdisk.model.inputs import INPUT_KINDS, to_paper
+
+    x = to_paper(disk, value.kind, value.text.strip(), value.option)
+    if value.how == "si":
+        try:
+            x = check_real(value.name, x, **value.bounds)
+        except INPUT_ERRORS as exc:
+            raise type(exc)(f"{exc} (from {value.option} {value.text})") from None
+        echo.append(f"{value.option} {value.text} = {x:.10g} {INPUT_KINDS[value.kind][3]}")
+    return float(x)
+
+
+def _resolve_state(text: str, disk, echo: list) -> str:
+    """``--state`` with each dimensional component in the paper's units (angles as
+    typed); a plain number of a dimensional component is refused for a physical disk."""
+    from rollingdisk.model.inputs import INPUT_KINDS, to_paper
+
+    kinds = {"X_C": "length", "Y_C": "length", "V_X": "speed", "V_Y": "speed",
+             "omega1": "angular_speed", "omega2": "angular_speed", "omega3": "angular_speed"}
+    items = []
+    for item in filter(None, (part.strip() for part in text.split(","))):
+        key, sep, val = item.partition("=")
+        kind = kinds.get(key.strip())
+        if sep and kind is not None:
+            x = to_paper(disk, kind, val.strip(), f"--state {key.strip()}=")
+            if not _is_plain_number(val):
+                echo.append(f"--state {key.strip()}={val.strip()} = {x:.10g} "
+                            f"{INPUT_KINDS[kind][3]}")
+            val = repr(float(x))
+        items.append(f"{key}{sep}{val}")
+    return ",".join(items)
+
+
+def _is_plain_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def resolve_inputs(args, disk) -> list[str]:
+    """Convert every dimensional value of ``args`` (:func:`quantity`, ranges of them,
+    ``--state``) to the paper's units with ``disk``'s scale, in place; the conversions made,
+    as lines to echo (``--t-end 2s = 58.09 sqrt(a/g)``).
+
+    Raises
+    ------
+    ParameterError
+        A plain number for a physical disk (the message names both spellings), a value with
+        a unit for a disk without a physical size, or a converted value out of its range.
+    """
+    echo: list[str] = []
+    for key, value in list(vars(args).items()):
+        if isinstance(value, _Input):
+            setattr(args, key, _resolve_one(value, disk, echo))
+        elif isinstance(value, _Range):
+            setattr(args, key, value.resolve(disk, echo))
+    state = getattr(args, "state", None)
+    if isinstance(state, str) and not getattr(args, "_state_resolved", False):
+        args.state = _resolve_state(state, disk, echo)
+        args._state_resolved = True
+    return echo
+
+
+class _Range:
+    """``A:B:N`` of dimensional values (:func:`quantity_range`), resolved to a list."""
+
+    def __init__(self, ends: list, n: int):
+        self.ends, self.n = ends, n
+
+    def resolve(self, disk, echo: list) -> list[float]:
+        ends = [_resolve_one(x, disk, echo) for x in self.ends]
+        if self.n == 1 or len(ends) == 1:
+            return ends[:1]
+        a, b = ends
+        n = self.n
+        return [a + (b - a) * i / (n - 1) for i in range(n - 1)] + [b]  # as np.linspace
+
+
+def quantity_range(name: str, kind: str, option: str | None = None, *,
+                   points_max: int = 100_000):
+    """An argparse type: ``A:B:N`` (N points from A to B) or one value, A and B dimensional
+    values as :func:`quantity` reads them (``10rad/s:30rad/s:5``)."""
+    one = quantity(name, kind, option)
+
+    def parse(text: str) -> _Range:
+        parts = str(text).split(":")
+        if len(parts) not in (1, 3):
+            raise argparse.ArgumentTypeError(f"expected a value or A:B:N, got {text!r}")
+        ends = [one(x) for x in parts[:2]]
+        try:
+            n = check_int("N", int(parts[2]), low=1, high=points_max) if len(parts) == 3 \
+                else 1
+        except (ValueError, *INPUT_ERRORS) as exc:
+            why = str(exc) if isinstance(exc, INPUT_ERRORS) else "not a number"
+            raise argparse.ArgumentTypeError(f"expected a value or A:B:N with finite A, B "
+                                             f"and N >= 1, got {text!r} ({why})") from None
+        return _Range(ends, n)
+
+    return parse
+
+
+def alias(p, old: str, new: str, **kw) -> None:
+    """``old``, a spelling kept for scripts written before ``new`` became the one name: it
+    still works and is hidden from --help (``kw``: as ``new``'s type, dest, action)."""
+    p.add_argument(old, help=argparse.SUPPRESS, default=argparse.SUPPRESS, **kw)
+
+
+def add_progress_args(p) -> None:
+    """``--quiet`` (nothing on stderr but errors) and ``--progress`` (the progress bar even
+    when stderr is not a terminal): by default progress is drawn only on a terminal."""
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("--quiet", action="store_true",
+                   help="no progress and no notes on stderr (default: progress only when "
+                   "stderr is a terminal)")
+    g.add_argument("--progress", action="store_true",
+                   help="draw progress on stderr even when it is not a terminal (a log file)")
+
+
+def show_progress(args) -> bool:
+    """Whether a command draws progress: not with --quiet or --json; with --progress; else
+    only when stderr is a terminal."""
+    if getattr(args, "quiet", False) or getattr(args, "json", False):
+        return False
+    if getattr(args, "progress", False):
+        return True
+    try:
+        return sys.stderr.isatty()
+    except (AttributeError, ValueError):
+        return False
+
+
 positive_int = integer("the value", low=1)
 H = real("h", low=0.0, high=H_MAX)  # the half-thickness, as Disk checks it
 _HALF_PI = math.pi / 2
@@ -109,10 +309,12 @@ _HALF_PI = math.pi / 2
 def t_end_arg(p, *, high: float, default: float | None = None) -> None:
     """``--t-end`` in (0, high]."""
     kw = {"required": True} if default is None else {"default": default}
-    p.add_argument("--t-end", dest="t_end", type=real("t_end", low=0.0, high=high,
-                                                       low_open=True),
-                   help=f"simulated time in (0, {high:g}] (units sqrt(a/g))"
-                   + ("" if default is None else f" (default {default:g})"), **kw)
+    p.add_argument("--t-end", dest="t_end", type=quantity("t_end", "time", low=0.0, high=high,
+                                                           low_open=True),
+                   metavar="TIME",
+                   help=f"simulated time in (0, {high:g}] sqrt(a/g) (with a physical disk a "
+                   "time with a unit, 2s, or 20a in the paper's units)"
+                   + ("" if default is None else f" (default {default:g} sqrt(a/g))"), **kw)
 
 
 def add_perturbation_args(p, *, kick: float | None = 0.0, perturb: float | None = 0.0) -> None:
@@ -122,8 +324,10 @@ def add_perturbation_args(p, *, kick: float | None = 0.0, perturb: float | None 
                              low_open=True, high_open=True),
                    help="added to theta(0), in (-pi/2, pi/2) rad (or deg)"
                    + ("" if perturb is None else f" (default {perturb:g})"))
-    p.add_argument("--kick", type=real("kick"), default=kick,
-                   help="added to omega1(0) = d theta/dt (units sqrt(g/a))"
+    p.add_argument("--kick", type=quantity("kick", "angular_speed"), default=kick,
+                   metavar="RATE",
+                   help="added to omega1(0) = d theta/dt (units sqrt(g/a); with a physical "
+                   "disk an angular speed, 0.5rad/s)"
                    + ("" if kick is None else f" (default {kick:g})"))
 
 
@@ -155,7 +359,7 @@ def _disk_list() -> str:
 
 
 def add_disk_options(p, *, required: bool = False, default_h: float | None = None,
-                     h: bool = True):
+                     h: bool = True, positional: bool = False, h_range: tuple | None = None):
     """The options that give the disk, as an argument group "the disk".
 
     ``--h H`` (dimensionless half-thickness / radius), ``--disk NAME`` (a key of
@@ -175,6 +379,11 @@ def add_disk_options(p, *, required: bool = False, default_h: float | None = Non
         The ``h`` of a command given no size (``None``: :data:`rollingdisk.DEFAULT_H`).
     h : bool
         Add ``--h`` (``False`` for a command that adds its own, e.g. a range).
+    positional : bool
+        Also take the name of a disk as an optional positional argument
+        (``rollingdisk thresholds euro-1``), the same as ``--disk``.
+    h_range : (low, high), optional
+        The range of ``--h`` when narrower than ``[0, H_MAX]`` (the explorer's).
 
     Returns
     -------
@@ -185,16 +394,23 @@ def add_disk_options(p, *, required: bool = False, default_h: float | None = Non
         "the disk", "Give it one way: --h H alone (dimensionless: answers in the paper's "
         "units, m = a = g = 1), --disk NAME, or --radius/--diameter with --thickness (or "
         "with --h); --mass and --gravity may be added. With a physical size every answer "
-        "is also given in SI units.")
+        "is also given in SI units. " + UNITS_RULE)
+    import rollingdisk as rd
+
+    if positional:
+        g.add_argument("disk_name", nargs="?", default=None, choices=sorted(rd.DISKS),
+                       metavar="DISK", help="a named disk, as --disk NAME")
     if h:
+        lo, hi = (0.0, H_MAX) if h_range is None else h_range
+        span = f"{lo:g} <= h <= {'1e8' if h_range is None else f'{hi:g}'}"
         if required:
-            text = "half-thickness / radius, 0 <= h <= 1e8 (dimensionless)"
+            text = f"half-thickness / radius, {span} (dimensionless)"
         else:
             dh = DEFAULT_H if default_h is None else default_h
-            text = (f"half-thickness / radius, 0 <= h <= 1e8 (dimensionless; default "
-                    f"{dh:g} when no size is given)")
-        g.add_argument("--h", type=H, default=None, metavar="H", help=text)
-    import rollingdisk as rd
+            text = (f"half-thickness / radius, {span} (dimensionless; default {dh:g} when "
+                    "no size is given)")
+        g.add_argument("--h", type=H if h_range is None else real("h", low=lo, high=hi),
+                       default=None, metavar="H", help=text)
 
     g.add_argument("--disk", choices=sorted(rd.DISKS), default=None, metavar="NAME",
                    help="a named disk, one of " + _disk_list())
@@ -229,6 +445,12 @@ def disk_from_args(args):
     import rollingdisk as rd
 
     opts = {k: getattr(args, k, None) for k in DISK_OPTIONS}
+    named = getattr(args, "disk_name", None)
+    if named is not None:
+        if opts["disk"] is not None and opts["disk"] != named:
+            raise CLIError(f"{_prog(args)}: error: two disks named: {named} and --disk "
+                           f"{opts['disk']}; give one")
+        opts["disk"] = named
     h = getattr(args, "h", None)
     if isinstance(h, list):  # sweep's range: a physical disk takes a single value
         h = h[0] if len(h) == 1 else h
@@ -236,53 +458,43 @@ def disk_from_args(args):
                                                                "thickness"))
     if not sized:
         if getattr(args, "_disk_required", False):
-            command = getattr(args, "command", None)
-            prog = f"rollingdisk {command}" if command else "rollingdisk"
-            raise CLIError(f"{prog}: error: give the disk: --h H (dimensionless), --disk "
-                           "NAME, or --radius/--diameter with --thickness")
+            raise CLIError(f"{_prog(args)}: error: give the disk: --h H (dimensionless), "
+                           "--disk NAME, or --radius/--diameter with --thickness")
         h = getattr(args, "_disk_default_h", None)
-    return rd.disk_from_options(**opts, h=h, option_prefix="--")
+    disk = rd.disk_from_options(**opts, h=h, option_prefix="--")
+    echo_inputs(args, resolve_inputs(args, disk))
+    return disk
 
 
-class _Length(float):
-    """A length in metres given with a unit (see :func:`length_coefficient`)."""
+def _prog(args) -> str:
+    command = getattr(args, "command", None)
+    return f"rollingdisk {command}" if command else "rollingdisk"
+
+
+def echo_inputs(args, lines: list[str]) -> None:
+    """Say how the dimensional values were read (``units: --t-end 2s = 58.09 sqrt(a/g)``):
+    on stdout before the text output, on stderr for a command whose stdout is a path
+    (``_echo_stderr``), not at all with --json or --quiet."""
+    if not lines or getattr(args, "json", False):
+        return
+    stderr = getattr(args, "_echo_stderr", False)
+    if stderr and getattr(args, "quiet", False):
+        return
+    print("units: " + "; ".join(lines) + " (the paper's units: m = a = g = 1)",
+          file=sys.stderr if stderr else sys.stdout, flush=True)
 
 
 def length_coefficient(name: str):
-    """An argparse type: a length coefficient, a plain number in units of the radius ``a``
-    or a length with a unit (``20um``) when the disk has a physical radius; checked
-    ``>= 0`` here and converted by :func:`resolve_length` once the disk is known."""
-    plain = real(name, low=0.0)
-
-    def parse(text: str) -> float:
-        try:
-            float(text)
-        except ValueError:
-            pass
-        else:
-            return plain(text)
-        import rollingdisk as rd
-
-        try:
-            return _Length(rd.parse_length(text, f"--{name.replace('_', '-')}"))
-        except INPUT_ERRORS as exc:
-            raise argparse.ArgumentTypeError(
-                f"{exc} (or a plain number >= 0, in units of the radius)") from None
-
-    return parse
+    """An argparse type: a length coefficient ``>= 0`` (rolling resistance, pivoting
+    friction), in units of the radius ``a`` or, with a physical disk, a length with a unit
+    (``20um``): a dimensional value as :func:`quantity` reads it."""
+    return quantity(name, "length", low=0.0)
 
 
 def resolve_length(value, disk, option: str):
-    """A value of :func:`length_coefficient` in units of the radius of ``disk``."""
-    if not isinstance(value, _Length):
-        return value
-    if disk.radius is None:
-        from rollingdisk.util.errors import ParameterError
-
-        raise ParameterError(f"{option} {value:g} m is a length with a unit: it needs a disk "
-                             "with a physical radius (--disk, --radius or --diameter); "
-                             "without one give it in units of the radius, a plain number")
-    return float(value) / disk.radius
+    """A value of :func:`length_coefficient` in units of the radius of ``disk`` (already a
+    float once :func:`resolve_inputs` ran)."""
+    return _resolve_one(value, disk, [])
 
 
 def add_motion_args(p, *, h_default: float | None = None, coulomb: bool = False):
@@ -306,15 +518,25 @@ def add_motion_args(p, *, h_default: float | None = None, coulomb: bool = False)
     p.add_argument("--motion", choices=("circle", "straight"), default=None,
                    help="circle (spin in place included) or straight; default from the options")
     g = p.add_mutually_exclusive_group()
-    g.add_argument("--Omega0", type=real("Omega0"),
-                   help="spin rate d psi/dt of a steady circle (units sqrt(g/a))")
-    g.add_argument("--rC", type=real("r_C"),
-                   help="signed radius of the circle of the centre C (units of a)")
-    g.add_argument("--rP", type=real("r_P"),
-                   help="signed radius of the circle of the contact point (units of a)")
-    g.add_argument("--omega0", type=real("omega0"),
+    g.add_argument("--Omega0", type=quantity("Omega0", "angular_speed", "--Omega0"),
+                   metavar="RATE",
+                   help="spin rate d psi/dt of a steady circle (units sqrt(g/a); with a "
+                   "physical disk 30rad/s, 300rpm)")
+    g.add_argument("--omega30", type=quantity("omega30", "angular_speed", "--omega30"),
+                   metavar="RATE",
+                   help="spin omega30 = Omega0 cos(theta0) of a steady circle, the axis of "
+                   "the maps (units sqrt(g/a); with a physical disk 30rad/s)")
+    g.add_argument("--rC", type=quantity("r_C", "length", "--rC"), metavar="LENGTH",
+                   help="signed radius of the circle of the centre C (units of a; with a "
+                   "physical disk 5cm)")
+    g.add_argument("--rP", type=quantity("r_P", "length", "--rP"), metavar="LENGTH",
+                   help="signed radius of the circle of the contact point (units of a; "
+                   "with a physical disk 5cm)")
+    g.add_argument("--omega0", type=quantity("omega0", "rolling_rate", "--omega0"),
+                   metavar="RATE",
                    help="rolling rate d phi/dt of a straight line (units sqrt(g/a); C moves "
-                   "at omega0 sqrt(a g))")
+                   "at omega0 sqrt(a g); with a physical disk 20rad/s, or the speed of C, "
+                   "0.3m/s)")
     return g
 
 
@@ -336,15 +558,15 @@ def motion_from_args(args, command: str):
         return rd.straight_line(disk, ground, args.omega0, theta0=args.theta0)
     if args.omega0 is not None:
         raise CLIError(f"rollingdisk {command}: error: --omega0 is for --motion straight; "
-                       "circles take --Omega0, --rC or --rP")
+                       "circles take --Omega0, --omega30, --rC or --rP")
     if args.theta0 is None:
         raise CLIError(f"rollingdisk {command}: error: give --theta0 (e.g. 30deg) with one of "
-                       "--Omega0, --rC, --rP, or --motion straight --omega0 W")
-    if args.Omega0 is None and args.rC is None and args.rP is None:
-        raise CLIError(f"rollingdisk {command}: error: give one of --Omega0, --rC, --rP "
-                       "(or --motion straight --omega0 W)")
+                       "--Omega0, --omega30, --rC, --rP, or --motion straight --omega0 W")
+    if args.Omega0 is None and args.rC is None and args.rP is None and args.omega30 is None:
+        raise CLIError(f"rollingdisk {command}: error: give one of --Omega0, --omega30, --rC, "
+                       "--rP (or --motion straight --omega0 W)")
     return rd.steady_motion(disk, ground, args.theta0, Omega0=args.Omega0, r_C=args.rC,
-                            r_P=args.rP)
+                            r_P=args.rP, omega30=args.omega30)
 
 
 def start_from_args(args, command: str):

@@ -145,7 +145,10 @@ def disk_line(disk) -> str:
 
 
 def progress_bar(args):
-    """The progress bar of a command's run on stderr (quiet with ``--json``)."""
+    """The progress bar of a command's run on stderr: drawn only on a terminal, or with
+    ``--progress``; never with ``--quiet`` or ``--json`` (:func:`~rollingdisk.cli._args.
+    show_progress`)."""
+    from rollingdisk.cli._args import show_progress
     from rollingdisk.util.progress import ProgressBar
 
-    return ProgressBar(quiet=getattr(args, "json", False))
+    return ProgressBar(quiet=not show_progress(args))

@@ -3,7 +3,7 @@
 
     $ rollingdisk animate --theta0 30deg --Omega0 2 --out motion.gif
     $ rollingdisk animate --h 0.3 --theta0 0.5 --rC 1 --kick 0.05 --t-end 40 --out m.mp4
-    $ rollingdisk animate --disk cd --theta0 30deg --Omega0 2 --out cd.gif
+    $ rollingdisk animate --disk cd --theta0 30deg --Omega0 10rad/s --t-end 2s --out cd.gif
 """
 
 from __future__ import annotations
@@ -37,6 +37,7 @@ def configure(sub):
                    help=f"frames per second in [{FPS_RANGE[0]}, {FPS_RANGE[1]}] (default 15)")
     dpi_arg(p, 70)
     p.add_argument("--out", required=True, help="motion.gif (or .mp4 when ffmpeg exists)")
+    p.set_defaults(_echo_stderr=True)  # stdout is the path written
     return p
 
 

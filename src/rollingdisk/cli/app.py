@@ -84,13 +84,13 @@ class _Exit(Exception):  # noqa: N818 - argparse's exit (--help), as a return va
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse that reports usage errors as one line (exit status 2) and returns from
-    ``--help`` instead of exiting the interpreter.  A value that starts with a minus and a
-    digit (``--mass -1g``, ``--theta0 -30deg``) is a value, not an option: the option's
-    own check then refuses or takes it."""
+    """argparse that reports usage errors as one line (exit status 2), returns from
+    ``--help`` instead of exiting the interpreter and takes no abbreviation.  A value that
+    starts with a minus and a digit (``--mass -1g``, ``--theta0 -30deg``) is a value, not
+    an option: the option's own check then refuses or takes it."""
 
     def __init__(self, *args, **kw):
-        super().__init__(*args, **kw)
+        super().__init__(*args, **(kw | {"allow_abbrev": False}))  # --h is not --help
         self._negative_number_matcher = re.compile(r"^-\.?\d")
 
     def error(self, message: str):  # noqa: D401 - argparse API

@@ -8,7 +8,12 @@ two simulated steady motions with their animations.
 
 from __future__ import annotations
 
-from rollingdisk.cli._args import add_disk_options, disk_from_args
+from rollingdisk.cli._args import (
+    add_disk_options,
+    add_progress_args,
+    disk_from_args,
+    show_progress,
+)
 from rollingdisk.cli._format import agg
 from rollingdisk.model.disk import DEFAULT_H
 
@@ -20,12 +25,12 @@ def configure(sub):
         "disk with a physical size (--disk euro-1, --radius/--diameter with --thickness) "
         "adds SI values to thresholds.json, and with a mass it is also the disk run as "
         "Euler's disk (otherwise the commercial toy).")
-    add_disk_options(p, default_h=DEFAULT_H)
+    add_disk_options(p, default_h=DEFAULT_H, positional=True)
     p.add_argument("--out", default="atlas",
                    help="output folder (default ./atlas; replaced as a whole, so it must be "
                    "new, empty or an earlier atlas)")
     p.add_argument("--quick", action="store_true", help="coarse grids, short simulations")
-    p.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
+    add_progress_args(p)
     return p
 
 
@@ -36,6 +41,6 @@ def run(args) -> int:
 
     plain = disk.radius is None and disk.mass is None  # dimensionless: its h
     result = build.build_atlas(disk.h if plain else disk, args.out, quick=args.quick,
-                               progress=not args.quiet)
+                               progress=show_progress(args))
     print(result.index)
     return 0

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import json
 
+from rollingdisk.cli._args import add_progress_args, show_progress
+
 
 def configure(sub):
     p = sub.add_parser("derive")
@@ -16,13 +18,14 @@ def configure(sub):
                    help="'2': eqs. (1)-(13), (37), (38), (49) only (fast); 'all' (default) "
                    "adds sections 3-4, eqs. (15)-(59) and the quoted numbers")
     p.add_argument("--json", action="store_true", help="print the table as JSON")
+    add_progress_args(p)
     return p
 
 
 def run(args) -> int:
     from rollingdisk.symbolic import check_equations, format_table
 
-    rows = check_equations(progress=not args.json, sections=args.sections)
+    rows = check_equations(progress=show_progress(args), sections=args.sections)
     if args.json:
         print(json.dumps([row.as_dict() for row in rows], indent=2, allow_nan=False))
     else:

@@ -17,12 +17,17 @@ import math
 
 from rollingdisk.cli._args import (
     DISK_OPTIONS,
+    UNITS_RULE,
     add_disk_options,
+    add_progress_args,
     disk_from_args,
+    echo_inputs,
     length_coefficient,
     positive_int,
+    quantity,
     real,
-    resolve_length,
+    resolve_inputs,
+    show_progress,
 )
 from rollingdisk.cli._format import disk_line, numeric_warnings, with_si
 
@@ -49,11 +54,11 @@ def configure(sub):
         "air drag: Moffatt's squeeze film or Bildsten's boundary layer) until it falls "
         "flat, lifts off or comes to rest; exponents near the end fitted and predicted "
         "(docs/friction.md); --sound writes its whirr as a WAV file.")
-    g = add_disk_options(p)
+    g = add_disk_options(p, positional=True)
     g.description = ("Default: the commercial Euler's Disk (--mass and --gravity alone "
                      "change only those). Any other disk needs a physical size and a mass: "
                      "--disk NAME, or --radius/--diameter with --thickness (or --h) and "
-                     "--mass.")
+                     "--mass. Every disk here has a physical size: " + UNITS_RULE)
     for action in g._group_actions:
         if action.dest == "h":
             action.help = ("half-thickness / radius (dimensionless), with --radius or "
@@ -81,7 +86,7 @@ def configure(sub):
                    metavar="S",
                    help=f"longest sound in seconds: a longer run keeps its end (default "
                    f"{MAX_SECONDS:g}; sample rate {RATE} Hz)")
-    p.add_argument("--quiet", action="store_true", help="no progress bar on stderr")
+    add_progress_args(p)
     p.add_argument("--mu", type=real("mu", low=0.0), default=toy.mu,
                    help=f"friction coefficient at saturation, dimensionless (default "
                    f"{toy.mu:g})")
@@ -92,17 +97,17 @@ def configure(sub):
                    "transitions (compiled DOP853; air: the film only). Its micro-slip near "
                    "the end costs many steps: the toy falls flat after 7.5e7 steps, about "
                    "8 minutes (docs/friction.md)")
-    p.add_argument("--creep", type=real("creep", low=0.0, low_open=True),
+    p.add_argument("--creep", type=quantity("creep", "inverse_speed", low=0.0, low_open=True),
                    default=toy.creep, help="creep coefficient k > 0: tangential force "
                    "-k F_z u at small slip speed u, u in units sqrt(a g) (so k in units "
-                   f"1/sqrt(a g)) (default {toy.creep:g})")
+                   f"1/sqrt(a g), written 50a; or in s/m, 5s/m) (default {toy.creep:g}a)")
     p.add_argument("--rolling-resistance", dest="rolling_resistance",
                    type=length_coefficient("rolling_resistance"),
                    default=toy.rolling_resistance, metavar="C",
-                   help="rolling-resistance length c >= 0 (|M_h| = c F_z), in units of the "
-                   f"radius a (default {toy.rolling_resistance:g}, "
-                   f"{toy.rolling_resistance * toy.radius * 1e6:.3g} um on the toy) or a "
-                   "length with a unit (20um)")
+                   help="rolling-resistance length c >= 0 (|M_h| = c F_z): a length with a "
+                   "unit (20um) or in units of the radius a with the suffix a (5e-4a) "
+                   f"(default {toy.rolling_resistance:g}a, "
+                   f"{toy.rolling_resistance * toy.radius * 1e6:.3g} um on the toy)")
     p.add_argument("--alpha0", type=real("alpha0", low=0.0, high=math.pi / 2, low_open=True,
                                          high_open=True),
                    default=toy.alpha0, help=f"initial tilt in rad (default {toy.alpha0:g})")
@@ -133,7 +138,7 @@ def run(args) -> int:
         check_replaceable(args.out, EULER_DISK_FILES, name="--out")  # before the work
     if args.sound is not None:
         check_writable(args.sound, name="--sound")  # before the work
-    bar = ProgressBar(quiet=args.quiet)
+    bar = ProgressBar(quiet=not show_progress(args))
     try:
         with numeric_warnings() as caught:  # said in the result, not printed
             result = run_euler_disk(toy, max_steps=max_steps, max_wall_time=max_wall_time,
@@ -195,16 +200,24 @@ def _toy(args, parameters: dict):
             d = rd.disk_from_options(disk="euler-disk", mass=args.mass, gravity=args.gravity,
                                      option_prefix="--")
             base = EulerDisk(mass=d.mass, gravity=d.gravity)
-        c = resolve_length(args.rolling_resistance, base.disk, "--rolling-resistance")
+        _resolve(args, base.disk, parameters)
         return EulerDisk(radius=base.radius, thickness=base.thickness, mass=base.mass,
-                         gravity=base.gravity, rolling_resistance=c, **parameters)
+                         gravity=base.gravity, rolling_resistance=args.rolling_resistance,
+                         **parameters)
     disk = disk_from_args(args)
     if disk.radius is None or disk.mass is None:
         raise ParameterError("euler-disk needs a disk with a physical size and a mass: "
                              "--disk NAME, or --radius/--diameter with --thickness (or --h) "
                              "and --mass (without any, the commercial Euler's Disk)")
-    c = resolve_length(args.rolling_resistance, disk, "--rolling-resistance")
-    return EulerDisk.from_disk(disk, rolling_resistance=c, **parameters)
+    _resolve(args, disk, parameters)
+    return EulerDisk.from_disk(disk, rolling_resistance=args.rolling_resistance, **parameters)
+
+
+def _resolve(args, disk, parameters: dict) -> None:
+    """The dimensional options (--rolling-resistance, --creep) in the paper's units of the
+    toy's disk, which always has a physical size (a plain number is refused)."""
+    echo_inputs(args, resolve_inputs(args, disk))
+    parameters["creep"] = args.creep
 
 
 def _print(result) -> None:

@@ -4,7 +4,7 @@ points, nutation period, precession per period, and optionally its figure.
     $ rollingdisk exact --h 0.1 --theta0 0.4 --Omega0 3 --kick 0.3
     $ rollingdisk exact --ground smooth --h 0.1 --state theta=0.3,omega3=2 --json
     $ rollingdisk exact --h 0.1 --theta0 0.4 --Omega0 3 --kick 0.3 --out exact.png
-    $ rollingdisk exact --disk us-quarter --theta0 0.4 --Omega0 3 --kick 0.3   # SI beside
+    $ rollingdisk exact --disk us-quarter --theta0 0.4 --Omega0 80rad/s --kick 2rad/s  # SI beside
 """
 
 from __future__ import annotations

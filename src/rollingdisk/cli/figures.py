@@ -6,7 +6,7 @@
 
 from __future__ import annotations
 
-from rollingdisk.cli._args import integer, real
+from rollingdisk.cli._args import add_progress_args, integer, real, show_progress
 from rollingdisk.cli._format import agg
 
 
@@ -32,6 +32,7 @@ def configure(sub):
     dpi_arg(p, 110)
     p.add_argument("--only", nargs="+", metavar="FIG", choices=tuple(FIGURES),
                    help=f"a subset of {' '.join(FIGURES)}")
+    add_progress_args(p)
     return p
 
 
@@ -40,7 +41,7 @@ def run(args) -> int:
     from rollingdisk.plotting.figures import paper_figures
     from rollingdisk.util.progress import ProgressBar
 
-    bar = ProgressBar()
+    bar = ProgressBar(quiet=not show_progress(args))
     paths = paper_figures(args.out, scale=args.scale, dpi=args.dpi, only=args.only,
                           progress=bar.note)
     for path in paths:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import sys
 
-from rollingdisk.cli._args import add_disk_options, disk_from_args
+from rollingdisk.cli._args import add_disk_options, add_progress_args, disk_from_args, show_progress
 from rollingdisk.cli._format import agg, disk_line, has_scale
 from rollingdisk.cli.figures import dpi_arg
 from rollingdisk.model.disk import DEFAULT_H
@@ -39,6 +39,7 @@ def configure(sub):
     p.add_argument("--out", required=True,
                    help=f"image file ({', '.join('.' + f for f in IMAGE_FORMATS)})")
     dpi_arg(p, 110)
+    add_progress_args(p)
     return p
 
 
@@ -79,7 +80,8 @@ def _sweep_map(args, plots) -> dict:
     from rollingdisk.util.progress import ProgressBar
 
     what = "trajectories" if args.kind == "nonlinear" else "bisection rounds"
-    bar = ProgressBar(label=f"map: {what}", delay=0.0, interval=0.5)
+    bar = ProgressBar(label=f"map: {what}", delay=0.0, interval=0.5,
+                      quiet=not show_progress(args))
     try:
         ds = map_sweep(args.ground, args.h, args.kind, progress=bar)
     finally:

@@ -6,7 +6,7 @@ motion or any state, on rough, smooth or Coulomb ground.
           --out run.csv --json
     $ rollingdisk simulate --ground coulomb --mu 0.3 --h 0.1 --theta0 0.3 --Omega0 2 \\
           --t-end 20
-    $ rollingdisk simulate --disk euro-1 --theta0 30deg --Omega0 2 --t-end 100 --out c.csv
+    $ rollingdisk simulate --disk euro-1 --theta0 30deg --Omega0 30rad/s --t-end 2s --out c.csv
 """
 
 from __future__ import annotations
@@ -20,12 +20,15 @@ from rollingdisk.cli._args import (
     add_json_arg,
     add_motion_args,
     add_perturbation_args,
+    add_progress_args,
     add_state_arg,
     add_tolerance_args,
+    alias,
     disk_from_args,
     initial_state,
     length_coefficient,
     positive_int,
+    quantity,
     real,
     start_from_args,
     t_end_arg,
@@ -79,11 +82,12 @@ def configure(sub):
     c.add_argument("--pivot", type=length_coefficient("pivot"), default=None, metavar="C",
                    help="pivoting (drilling) friction length c >= 0: |M_z| = c F_z; in units "
                    "of a, or a length with a unit for a disk with a physical size")
-    c.add_argument("--air", type=real("air", low=0.0), default=None, metavar="C",
+    c.add_argument("--air", type=quantity("air", "moment_per_rate", low=0.0), default=None,
+                   metavar="C",
                    help="air-film drag coefficient c >= 0 (the squeeze film under the disk: a "
                    "moment per angular speed, units m a^(3/2) g^(1/2); c = K mu_air a^(3/2) / "
                    "(m g^(1/2)) with K = 1.28113 derived, about 1.2e-7 for Euler's disk in "
-                   "air)")
+                   "air; with a physical disk and a mass in kg*m^2/s)")
     c.add_argument("--until-rest", dest="until_rest", action="store_true",
                    help="go on past lift-off, edge contact and falling flat: flight, impacts "
                    "(restitution --restitution, friction --mu-k), rim changes and the flat "
@@ -115,6 +119,8 @@ def configure(sub):
                    type=real("max_wall_time", low=0.0, high=86400.0, low_open=True),
                    default=60.0, help="coulomb ground: wall-clock budget in seconds (default "
                    "60); a run that spends it stops with status time-budget and says so")
+    alias(p, "--max-wall", "--max-wall-time", dest="max_wall_time",
+          type=real("max_wall_time", low=0.0, high=86400.0, low_open=True))
     p.add_argument("--out", type=str, default=None, metavar="FILE.csv",
                    help="write the trajectory as CSV (t, X_C, Y_C, psi, theta, phi, omega1, "
                    "omega2, omega3, X_P, Y_P, F_x, F_y, F_z, E; smooth and coulomb ground "
@@ -125,6 +131,7 @@ def configure(sub):
                    "a physical size in SI units (forces and energies only with --mass) with "
                    "a second line '# t [s],X_C [m],...' naming each column's unit")
     add_json_arg(p)
+    add_progress_args(p)
     return p
 
 

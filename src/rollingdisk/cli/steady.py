@@ -4,7 +4,8 @@
     $ rollingdisk steady --h 0.17 --theta0 30deg --Omega0 2
     $ rollingdisk steady --ground smooth --h 0.3 --theta0 0.5 --rP 0.4 --json
     $ rollingdisk steady --h 0.1 --motion straight --omega0 2
-    $ rollingdisk steady --disk euro-1 --theta0 30deg --Omega0 2      # SI beside
+    $ rollingdisk steady --disk euro-1 --theta0 30deg --Omega0 60rad/s   # SI beside
+    $ rollingdisk steady --disk euro-1 --motion straight --omega0 0.3m/s
 """
 
 from __future__ import annotations

@@ -6,8 +6,8 @@ per-trajectory summaries next to the closed-form varpi^2 (docs/sweeps.md).
     $ rollingdisk sweep --ground smooth --h 0:0.5:6 --omega0 0.3:2:10 --t-end 50 --out s.nc
     $ rollingdisk sweep --ground rough --theta0 0.5 --omega30 1:3:5 --t-end 100 --basin \\
           --kick 0.5 --out basin.zarr
-    $ rollingdisk sweep --ground rough --disk euro-1 --theta0 0.3:1.2:20 --omega30 1:3:20 \\
-          --t-end 100 --out coin.zarr
+    $ rollingdisk sweep --ground rough --disk euro-1 --theta0 0.3:1.2:20 \\
+          --omega30 30rad/s:90rad/s:20 --t-end 3s --out coin.zarr
 """
 
 from __future__ import annotations
@@ -15,7 +15,6 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import sys
 import time
 
 from rollingdisk.cli._args import (
@@ -23,10 +22,15 @@ from rollingdisk.cli._args import (
     T_END_MAX,
     CLIError,
     add_disk_options,
+    add_progress_args,
     disk_from_args,
     parse_angle,
     positive_int,
+    quantity,
+    quantity_range,
     real,
+    resolve_inputs,
+    show_progress,
     t_end_arg,
 )
 from rollingdisk.cli._format import disk_fields, disk_line, has_scale, with_si
@@ -78,15 +82,21 @@ def configure(sub):
     p.add_argument("--theta0", type=sweep_range, default=None,
                    help="A:B:N (radians or deg); required for circles, not with --omega0")
     g = p.add_mutually_exclusive_group(required=True)
-    g.add_argument("--omega30", type=sweep_range, help="spin omega30 of the circles (A:B:N)")
-    g.add_argument("--rC", type=sweep_range, help="radius r_C of the circles of C (A:B:N)")
-    g.add_argument("--Omega0", type=sweep_range, help="precession rate Omega0 (A:B:N)")
-    g.add_argument("--omega0", type=sweep_range,
-                   help="straight lines rolling at omega20 = omega0 (A:B:N)")
+    g.add_argument("--omega30", type=_range("omega30", "angular_speed"),
+                   help="spin omega30 of the circles (A:B:N; with a physical disk "
+                   "10rad/s:30rad/s:5)")
+    g.add_argument("--rC", type=_range("r_C", "length", "--rC"),
+                   help="radius r_C of the circles of C (A:B:N; with a physical disk "
+                   "1cm:5cm:5)")
+    g.add_argument("--Omega0", type=_range("Omega0", "angular_speed", "--Omega0"),
+                   help="precession rate Omega0 (A:B:N; with a physical disk rad/s)")
+    g.add_argument("--omega0", type=_range("omega0", "rolling_rate", "--omega0"),
+                   help="straight lines rolling at omega20 = omega0 (A:B:N; with a physical "
+                   "disk rad/s, or m/s for the speed of C)")
     t_end_arg(p, high=T_END_MAX)
-    p.add_argument("--kick", type=real("kick"), default=None,
-                   help="kick in omega1 (default 1e-3; with --basin the largest kick, "
-                   "default 1)")
+    p.add_argument("--kick", type=quantity("kick", "angular_speed"), default=None,
+                   help="kick in omega1, units sqrt(g/a) (default 1e-3; with --basin the "
+                   "largest kick, default 1; with a physical disk 0.5rad/s)")
     p.add_argument("--perturb", type=real("perturb", angle=True, low=-math.pi / 2,
                                           high=math.pi / 2, low_open=True, high_open=True),
                    default=None, help="tilt added to theta0, in (-pi/2, pi/2)")
@@ -104,12 +114,21 @@ def configure(sub):
                    help="integrator (default taylor: the batch Taylor kernel)")
     p.add_argument("--out", required=True, help="FILE.zarr or FILE.nc")
     p.add_argument("--json", action="store_true", help="print one JSON object")
+    add_progress_args(p)
     return p
+
+
+def _range(name: str, kind: str, option: str | None = None):
+    """A range of a dimensional value (``A:B:N``, units on A and B with a physical disk)."""
+    return quantity_range(name, kind, option, points_max=RANGE_POINTS_MAX)
 
 
 def _grid(args):
     from rollingdisk.sweep import SweepGrid
 
+    h = _h_values(args)  # with a physical disk, also its scale converts the values with units
+    if not _physical(args):
+        resolve_inputs(args, None)
     if args.omega0 is not None and args.theta0 is not None:
         raise CLIError("rollingdisk sweep: error: --omega0 (straight lines) fixes theta0 = "
                        "arctan(h); drop --theta0")
@@ -119,7 +138,7 @@ def _grid(args):
     if args.basin and args.perturb is not None:
         raise CLIError("rollingdisk sweep: error: --basin bisects the kick; drop --perturb")
     second = {k: getattr(args, k) for k in ("omega30", "Omega0", "omega0")}
-    return SweepGrid(args.ground, h=_h_values(args), theta0=args.theta0 or (), r_C=args.rC,
+    return SweepGrid(args.ground, h=h, theta0=args.theta0 or (), r_C=args.rC,
                      **second)
 
 
@@ -165,9 +184,7 @@ def run(args) -> int:
     disk = disk_from_args(args) if _physical(args) else None
     start = time.perf_counter()
     executor = "dask" if args.dask else ("threads" if args.workers != 1 else "serial")
-    # with --json the bar (on stderr) is drawn on a terminal only
-    bar = ProgressBar(label="sweep", delay=0.0, interval=0.5,
-                      quiet=args.json and not sys.stderr.isatty())
+    bar = ProgressBar(label="sweep", delay=0.0, interval=0.5, quiet=not show_progress(args))
     try:
         if args.basin:
             ds = basin_sweep(grid, args.t_end, kick_max=1.0 if args.kick is None else args.kick,

@@ -4,6 +4,7 @@ for a disk with a physical size, the critical speeds in SI units beside them.
     $ rollingdisk thresholds --h 0.17
     $ rollingdisk thresholds --h 0.5 --json
     $ rollingdisk thresholds --disk euro-1
+    $ rollingdisk thresholds euro-1
     $ rollingdisk thresholds --diameter 23.25mm --thickness 2.33mm --json
 """
 
@@ -41,7 +42,7 @@ def configure(sub):
         "Dimensionless, as squared angular speeds in units g/a (m = a = g = 1); for a disk "
         "with a physical size (--disk, --radius/--diameter with --thickness) also as speeds "
         "in SI units: the straight-rolling threshold as the speed of C in m/s.")
-    add_disk_options(p, required=True)
+    add_disk_options(p, required=True, positional=True)
     add_json_arg(p)
     return p
 

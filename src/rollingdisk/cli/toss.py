@@ -18,7 +18,15 @@ import json
 import os
 import sys
 
-from rollingdisk.cli._args import add_disk_options, disk_from_args, integer, real
+from rollingdisk.cli._args import (
+    add_disk_options,
+    add_progress_args,
+    alias,
+    disk_from_args,
+    integer,
+    real,
+    show_progress,
+)
 from rollingdisk.cli._launch import (
     add_launch_options,
     hand_launch_from_args,
@@ -37,20 +45,23 @@ def configure(subparsers):
         "each runs through flight, impacts, rolling and sliding until its outcome is "
         "certain or the disk is at rest. Prints the frequency of heads, tails, edge and "
         "undecided (a toss that spent its wall-clock budget) with 95% Wilson intervals.")
-    add_disk_options(p, required=True)
+    add_disk_options(p, required=True, positional=True)
     p.add_argument("--n", type=integer("n", 1, 1_000_000), default=20,
                    help="number of tosses, >= 1 (default 20)")
     p.add_argument("--seed", type=integer("seed", 0, 2**63 - 1), default=0,
                    help="random seed of the launch conditions (default 0)")
-    p.add_argument("--e", type=real("e", low=0.0, high=1.0), default=0.5,
+    restitution = real("restitution", low=0.0, high=1.0)
+    p.add_argument("--restitution", dest="e", type=restitution, default=0.5,
                    help="coefficient of restitution of the impacts, in [0, 1] (default 0.5)")
+    alias(p, "--e", "--restitution", dest="e", type=restitution)
     p.add_argument("--mu", type=real("mu", low=0.0, high=1e6), default=0.5,
                    help="Coulomb friction coefficient at the contact, dimensionless, in "
                    "[0, 1e6] (default 0.5)")
-    p.add_argument("--max-wall", dest="max_wall", type=real("max_wall", low=0.0, high=3600.0,
-                                                            low_open=True), default=20.0,
+    budget = real("max_wall_time", low=0.0, high=3600.0, low_open=True)
+    p.add_argument("--max-wall-time", dest="max_wall", type=budget, default=20.0,
                    help="wall-clock budget of one toss in seconds (default 20); a toss "
                    "that spends it counts as undecided")
+    alias(p, "--max-wall", "--max-wall-time", dest="max_wall", type=budget)
     p.add_argument("--workers", type=integer("workers", 1, 256), default=1,
                    help="processes (default 1), at most the CPUs this process may use")
     p.add_argument("--results", default=None, metavar="FILE.jsonl",
@@ -61,6 +72,7 @@ def configure(subparsers):
     p.add_argument("--out", default=None, metavar="FILE.png",
                    help="a bar chart of the outcome probabilities with their intervals")
     add_launch_options(p)
+    add_progress_args(p)
     return p
 
 
@@ -77,9 +89,7 @@ def run(args) -> int:
     if args.out:
         check_writable(args.out, name="out")
     launch = hand_launch_from_args(args, disk) if hand else None
-    # a progress line on a terminal (never in a pipe or with --json)
-    bar = ProgressBar(label="tossing", delay=1.0, interval=0.5,
-                      quiet=args.json or not sys.stderr.isatty())
+    bar = ProgressBar(label="tosses", delay=0.0, interval=0.5, quiet=not show_progress(args))
     try:
         if launch is None:
             res = toss_ensemble(disk, args.n, args.seed, e=args.e, mu=args.mu,
@@ -101,8 +111,9 @@ def run(args) -> int:
             print(f"{k:10s} {res.counts[k]:6d}  p = {res.counts[k] / res.n:.4f}  "
                   f"95% [{lo:.4f}, {hi:.4f}]")
         print("; ".join(f"{k} = {v}" for k, v in launch_fields(args, disk, launch).items()))
-        print(f"h = {res.h:g}, n = {res.n}, seed = {res.seed}, {res.wall_time:.1f} s",
-              file=sys.stderr)
+        if not args.quiet:
+            print(f"h = {res.h:g}, n = {res.n}, seed = {res.seed}, {res.wall_time:.1f} s",
+                  file=sys.stderr)
     if args.out:
         _plot(res, args, "hand" if hand else "uniform")
     return 0
@@ -126,5 +137,5 @@ def _plot(res, args, launch: str) -> None:
     fig.tight_layout()
     with atomic_file(args.out, "wb") as f:
         fig.savefig(f, format="png")
-    if not args.json:
+    if not args.json and not args.quiet:
         print(f"wrote {os.fspath(args.out)}", file=sys.stderr)

@@ -65,12 +65,11 @@ def configure(subparsers) -> argparse.ArgumentParser:
     """
     p = subparsers.add_parser(
         "explore", help="interactive explorer in the web browser: maps, steady motions, 3D",
+        allow_abbrev=False,
         description="Serve an interactive explorer of steady motions on this machine and "
                     "open it in the web browser: click a map for a steady motion's numbers, "
                     "watch it kicked in 3D. Everything is served locally (works offline).")
-    p.add_argument("--h", type=_type(_h), default=rd.DEFAULT_H,
-                   help=f"half-thickness the page starts with, in [0, 100] "
-                        f"(default {rd.DEFAULT_H})")
+    _add_disk_options(p)
     p.add_argument("--ground", choices=api.GROUNDS, default="rough",
                    help="ground the page starts with (default rough)")
     p.add_argument("--port", type=_type(_port), default=DEFAULT_PORT,
@@ -83,6 +82,42 @@ def configure(subparsers) -> argparse.ArgumentParser:
     p.add_argument("--verbose", action="store_true", help="log every request on stderr")
     p.set_defaults(handler=run)
     return p
+
+
+def _add_disk_options(p) -> None:
+    """The disk the page starts with, by the options every disk-taking command has (the
+    command line's "the disk" group; written here because the explorer sits below
+    :mod:`rollingdisk.cli`): the page works in the paper's units, so only its ``h`` is
+    used."""
+    g = p.add_argument_group(
+        "the disk", "The disk the page starts with, one way: --h H alone, --disk NAME, or "
+        "--radius/--diameter with --thickness (or with --h); the page works in the paper's "
+        "units (m = a = g = 1), so only h = thickness / (2 radius) matters.")
+    g.add_argument("--h", type=_type(_h), default=None, metavar="H",
+                   help=f"half-thickness / radius, in [{api.H_RANGE[0]:g}, "
+                        f"{api.H_RANGE[1]:g}] (default {rd.DEFAULT_H})")
+    g.add_argument("--disk", choices=sorted(rd.DISKS), default=None, metavar="NAME",
+                   help="a named disk, one of " + ", ".join(sorted(rd.DISKS)))
+    g.add_argument("--radius", default=None, metavar="LENGTH",
+                   help="radius a, a length with a unit (11.625mm)")
+    g.add_argument("--diameter", default=None, metavar="LENGTH",
+                   help="diameter 2a instead of --radius (23.25mm)")
+    g.add_argument("--thickness", default=None, metavar="LENGTH",
+                   help="full thickness 2 h a (2.33mm), with --radius or --diameter")
+    g.add_argument("--mass", default=None, metavar="MASS", help="mass (7.5g); not used")
+    g.add_argument("--gravity", default=None, metavar="ACCELERATION",
+                   help="gravitational acceleration (9.81m/s^2); not used")
+
+
+def _start_h(args) -> float:
+    """The ``h`` the page starts with, from the disk options (checked in the page's range)."""
+    opts = {k: getattr(args, k, None) for k in ("disk", "radius", "diameter", "thickness",
+                                                 "mass", "gravity")}
+    h = getattr(args, "h", None)
+    if h is None and all(v is None for v in opts.values()):
+        return rd.DEFAULT_H
+    disk = rd.disk_from_options(**opts, h=h, option_prefix="--")
+    return check_real("h", disk.h, low=api.H_RANGE[0], high=api.H_RANGE[1])
 
 
 def _say(line: str) -> None:
@@ -105,11 +140,12 @@ def run(args) -> int:
     import webbrowser
 
 
+    h = _start_h(args)
     # beyond this machine only when asked for by name, and then with a warning (once the
     # address is bound: an address that cannot be is one line, the error)
     host = args.host if args.host is not None else DEFAULT_HOST
     try:
-        server = make_server(args.h, args.ground, host, args.port, verbose=args.verbose)
+        server = make_server(h, args.ground, host, args.port, verbose=args.verbose)
     except OSError as exc:
         hint = " (choose another with --port, or --port 0 for any free one)" \
             if exc.errno == errno.EADDRINUSE else ""

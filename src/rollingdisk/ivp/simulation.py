@@ -355,7 +355,9 @@ def simulate_steady(motion, t_end: float, *, perturb: float = 0.0, kick: float =
         :func:`~rollingdisk.theory.steady.straight_line`; its disk (with its physical scale, if it
         has one) is the trajectory's.
     t_end : float
-        End time, ``0 < t_end <= MAX_T`` (the run starts at ``t = 0``).
+        End time, ``0 < t_end <= MAX_T`` (the run starts at ``t = 0``); for a disk with a
+        physical scale also a pint quantity or text with a unit (``"2 s"``), as ``kick``
+        (``"0.1 rad/s"``) (:mod:`rollingdisk.model.inputs`).
     perturb : float
         Added to ``theta(0)``; all else stays at its steady value (eq. 36 with
         ``theta~(0) = perturb``, ``omega~_i(0) = 0``).  The linearized eq. (39) then has a
@@ -381,10 +383,14 @@ def simulate_steady(motion, t_end: float, *, perturb: float = 0.0, kick: float =
 
     if not isinstance(motion, SteadyMotion):
         raise ParameterTypeError(f"motion must be a SteadyMotion, got {type(motion).__name__}")
+    disk = motion.disk
+    if isinstance(t_end, str) or hasattr(t_end, "dimensionality"):
+        t_end = disk.to_paper("time", t_end, "t_end")
+    if isinstance(kick, str) or hasattr(kick, "dimensionality"):
+        kick = disk.to_paper("angular_speed", kick, "kick")
     t_end = check_real("t_end", t_end, low=0.0, low_open=True)
     perturb = check_real("perturb", perturb)
     kick = check_real("kick", kick)
-    disk = motion.disk
     i_theta = state_index(motion.ground, "theta")
     y0 = np.array(motion.initial_state(psi0, phi0), dtype=float)
     theta0 = float(y0[i_theta])

@@ -5,7 +5,9 @@ radius ``a`` and gravity ``g`` are set to one, so lengths are in units of ``a``,
 units of ``sqrt(a/g)``, speeds in ``sqrt(a g)``, angular speeds in ``sqrt(g/a)``, forces in
 ``m g`` and energies in ``m g a``.  A :class:`Disk` may carry an optional physical scale
 (radius, mass, gravity); its ``*_to_si`` methods are the one place where dimensionless
-numbers become SI numbers.
+numbers become SI numbers, and its ``*_from_si`` methods the way back.  Its ``radius``,
+``mass`` and ``gravity`` may be given as text with a unit (``"11.625mm"``) or as pint
+quantities (``Quantity(7.5, "g")``), converted to SI (:mod:`rollingdisk.model.quantity`).
 """
 
 from __future__ import annotations
@@ -65,6 +67,26 @@ def _number(x):
     return np.asarray(x, dtype=float)
 
 
+def _plain(value, parse, name):
+    """A physical input (text with a unit, a pint quantity) in SI, by ``parse``; anything
+    else unchanged (checked by the caller)."""
+    if isinstance(value, str) or hasattr(value, "dimensionality"):
+        return parse(value, name)
+    return value
+
+
+def _si_inputs(disk) -> None:
+    """Text with a unit and pint quantities for ``radius``, ``mass``, ``gravity``, in SI."""
+    for name in ("radius", "mass", "gravity"):
+        value = getattr(disk, name)
+        if isinstance(value, str) or hasattr(value, "dimensionality"):
+            from rollingdisk.model import quantity
+
+            parse = {"radius": quantity.parse_length, "mass": quantity.parse_mass,
+                     "gravity": quantity.parse_acceleration}[name]
+            object.__setattr__(disk, name, parse(value, name))
+
+
 def check_ground(ground) -> str:
     """Return ``ground`` if it is ``"rough"`` or ``"smooth"``, else raise ``ValueError``."""
     if ground not in GROUNDS:
@@ -106,6 +128,7 @@ class Disk:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "h", check_h(self.h))
+        _si_inputs(self)
         if self.radius is not None:
             object.__setattr__(self, "radius",
                                check_real("radius", self.radius, low=0.0, low_open=True))
@@ -118,8 +141,12 @@ class Disk:
     def from_dimensions(cls, radius: float, thickness: float, mass: float | None = None,
                         gravity: float = STANDARD_GRAVITY) -> Disk:
         """A disk from its physical radius and full thickness ``2h a`` (both in metres)."""
-        radius = check_real("radius", radius, low=0.0, low_open=True)
-        thickness = check_real("thickness", thickness, low=0.0)
+        from rollingdisk.model.quantity import parse_length
+
+        radius = check_real("radius", _plain(radius, parse_length, "radius"), low=0.0,
+                            low_open=True)
+        thickness = check_real("thickness", _plain(thickness, parse_length, "thickness"),
+                               low=0.0)
         return cls(h=thickness / (2.0 * radius), radius=radius, mass=mass, gravity=gravity)
 
     # -- inertia, eq. (10) -------------------------------------------------------------
@@ -192,3 +219,49 @@ class Disk:
         """Energies: units of ``m g a`` -> joules (a number, a sequence or an array)."""
         self._need("mass", "radius")
         return _number(e) * self.mass * self.gravity * self.radius
+
+    # -- units, the way back: SI -> the paper's units (the inverses of the above) ---------
+    def length_from_si(self, x):
+        """Lengths: metres -> units of ``a`` (a number, a sequence or an array)."""
+        self._need("radius")
+        return _number(x) / self.radius
+
+    def time_from_si(self, t):
+        """Times: seconds -> units of ``sqrt(a/g)`` (a number, a sequence or an array)."""
+        return _number(t) / self.time_unit
+
+    def speed_from_si(self, v):
+        """Speeds: m/s -> units of ``sqrt(a g)`` (a number, a sequence or an array)."""
+        self._need("radius")
+        return _number(v) / math.sqrt(self.radius * self.gravity)
+
+    def angular_speed_from_si(self, w):
+        """Angular speeds: rad/s -> units of ``sqrt(g/a)`` (a number, a sequence or an
+        array)."""
+        return _number(w) * self.time_unit
+
+    def force_from_si(self, f):
+        """Forces: newtons -> units of ``m g`` (a number, a sequence or an array)."""
+        self._need("mass")
+        return _number(f) / (self.mass * self.gravity)
+
+    def energy_from_si(self, e):
+        """Energies: joules -> units of ``m g a`` (a number, a sequence or an array)."""
+        self._need("mass", "radius")
+        return _number(e) / (self.mass * self.gravity * self.radius)
+
+    def to_paper(self, kind: str, value, name: str = "value") -> float:
+        """A dimensional input in the paper's units: a number as it is (the library's units),
+        text with a unit (``"2 s"``) or a pint quantity converted from SI with this disk's
+        scale; text without a unit is refused (ambiguous for a disk with a physical size),
+        ``"20a"`` is 20 in the paper's units.  See :func:`rollingdisk.model.inputs.to_paper`.
+
+        Examples
+        --------
+        >>> coin = Disk.from_dimensions(0.011625, 0.00233, 0.0075)
+        >>> round(coin.to_paper("time", "2 s"), 6)
+        58.088994
+        """
+        from rollingdisk.model.inputs import to_paper
+
+        return to_paper(self, kind, value, name)

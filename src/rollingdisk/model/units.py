@@ -3,186 +3,33 @@
 The numeric core computes in the paper's units (``m = a = g = 1``, :mod:`rollingdisk.model.disk`);
 this module is where physical input comes in and physical output goes out:
 
-* :func:`parse_length`, :func:`parse_mass`, :func:`parse_acceleration`: a string with a
-  unit (``"23.25mm"``, ``"7.5g"``, ``"9.81m/s^2"``, ``"0.9in"``) or a plain number (taken
-  as SI) -> a float in SI units.  Parsed by pint (imported only when a unit is written,
-  so ``import rollingdisk`` stays light); wrong dimensions, non-positive values, overflow
-  and unknown units raise :class:`~rollingdisk.util.errors.ParameterError` naming the
-  option and what it expects;
+* :func:`parse_length`, :func:`parse_mass`, :func:`parse_acceleration` (written in
+  :mod:`rollingdisk.model.quantity`, which imports no disk): a string with a unit
+  (``"23.25mm"``, ``"7.5g"``, ``"9.81m/s^2"``, ``"0.9in"``), a pint quantity or a plain
+  number (taken as SI) -> a float in SI units.  Parsed by pint (imported only when a unit
+  is written, so ``import rollingdisk`` stays light); wrong dimensions, non-positive
+  values, overflow and unknown units raise
+  :class:`~rollingdisk.util.errors.ParameterError` naming the option and what it expects;
 * :data:`DISKS`: named everyday disks with their sources; :func:`disk_from_options`, the one
   function a command line calls to turn its options into a :class:`Disk`;
 * :data:`KINDS` and :func:`si_view`: what each kind of quantity (time, length, speed, ...)
   is measured in, in the paper's units and in SI, and the conversion through a disk's
-  physical scale; :func:`si_fields` gives the SI view of any result that has one.
+  physical scale; :func:`si_fields` gives the SI view of any result that has one;
+* the way in, a dimensional input (a time, a speed, ...) in the paper's units, is
+  :mod:`rollingdisk.model.inputs`.
 """
 
 from __future__ import annotations
 
-import math
-import re
 from dataclasses import dataclass
-from functools import lru_cache
-
-import numpy as np
 
 from rollingdisk.model.disk import DEFAULT_H, STANDARD_GRAVITY, Disk, check_h
+from rollingdisk.model.quantity import parse_acceleration, parse_length, parse_mass
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["parse_length", "parse_mass", "parse_acceleration", "NamedDisk", "DISKS",
            "disk_from_options", "KINDS", "unit_of", "can_convert", "to_si", "si_view",
            "si_fields", "result_html"]
-
-
-# ------------------------------------------------------------------------------ parsing
-#: What each parser expects: pint's dimensionality, the SI unit, and examples for messages.
-_EXPECT = {
-    "length": ("[length]", "m", "a length such as 23.25mm, 0.9in or a plain number in metres"),
-    "mass": ("[mass]", "kg", "a mass such as 7.5g, 0.45kg or a plain number in kilograms"),
-    "acceleration": ("[length] / [time] ** 2", "m/s^2",
-                     "an acceleration such as 9.81m/s^2, 1g0 or a plain number in m/s^2"),
-}
-
-_DIMENSION_WORDS = {
-    "[length]": "a length", "[mass]": "a mass", "[time]": "a time",
-    "[length] / [time] ** 2": "an acceleration", "[length] / [time]": "a speed",
-    "dimensionless": "a plain number", "[length] ** 2": "an area",
-    "[length] ** 3": "a volume", "[temperature]": "a temperature",
-}
-
-
-@lru_cache(maxsize=1)
-def _registry():
-    """pint's unit registry, built once (about half a second) and only when a unit is used."""
-    import pint
-
-    return pint.UnitRegistry()
-
-
-def _parse(value, kind: str, name: str) -> float:
-    dim, si_unit, expect = _EXPECT[kind]
-    if isinstance(value, bool) or not isinstance(value, (str, int, float, np.integer,
-                                                         np.floating)):
-        raise ParameterTypeError(f"{name} must be {expect}, got {type(value).__name__} "
-                                 f"{value!r}")
-    shown = repr(value) if isinstance(value, str) else f"{value!r}"
-    if isinstance(value, str):
-        text = value.strip()
-        try:
-            x = float(text)  # a plain number: SI, no pint needed
-        except ValueError:
-            x = _parse_with_unit(text, dim, si_unit, expect, name, shown)
-    else:
-        try:
-            x = float(value)
-        except OverflowError:
-            x = math.inf
-    if not math.isfinite(x):
-        what = "not a number" if math.isnan(x) else "beyond floating-point range"
-        raise ParameterError(f"{name} must be {expect}, finite and positive; got {shown}, "
-                             f"which is {what}")
-    if x <= 0.0:
-        raise ParameterError(f"{name} must be positive ({expect}), got {shown}")
-    return x
-
-
-#: A power whose exponent is itself raised to a power (``10**10**10``): pint would compute
-#: it exactly, for ever; such input is refused before it reaches pint.
-_NESTED_POWER = re.compile(r"(\*\*|\^)\s*[-+(\s]*[\d.]+([eE][-+]?\d+)?\s*\)?\s*(\*\*|\^)")
-_EXPONENT = re.compile(r"(?:\*\*|\^)\s*[-+(\s]*([\d.]+(?:[eE][-+]?\d+)?)")
-#: Longest text handed to pint.
-_MAX_TEXT = 200
-
-
-def _parse_with_unit(text, dim, si_unit, expect, name, shown) -> float:
-    if not any(ch.isdigit() for ch in text):
-        raise ParameterError(f"{name} must be {expect}: a number with a unit, got {shown}")
-    if len(text) > _MAX_TEXT or _NESTED_POWER.search(text) or any(
-            float(e) > 1000.0 for e in _EXPONENT.findall(text)):
-        raise ParameterError(f"{name} must be {expect}; got {shown}, too long or with "
-                             "powers beyond floating-point range")
-    ureg = _registry()
-    try:
-        q = ureg.Quantity(text)
-    except Exception as exc:  # pint raises many kinds (undefined unit, syntax, ...)
-        import pint
-
-        if isinstance(exc, pint.errors.UndefinedUnitError):
-            why = f"unknown unit ({exc})"
-        else:
-            why = f"not a quantity pint can read ({type(exc).__name__}: {exc})"
-        raise ParameterError(f"{name} must be {expect}; got {shown}: {why}") from None
-    if not isinstance(q, ureg.Quantity):  # e.g. "2*3" is a plain number
-        q = ureg.Quantity(float(q), "")
-    got = str(q.dimensionality)
-    if got != dim:
-        words = _DIMENSION_WORDS.get(got, f"of dimension {got}")
-        raise ParameterError(f"{name} must be {expect}; got {shown}, which is {words}")
-    try:
-        return float(q.to(si_unit).magnitude)
-    except OverflowError:
-        return math.inf
-
-
-def parse_length(value, name: str = "length") -> float:
-    """A length in metres from ``"23.25mm"``, ``"0.9 in"``, ``"2.5cm"`` or a plain number (m).
-
-    Parameters
-    ----------
-    value : str or float
-        A number with a unit pint knows, or a plain number taken as metres.
-    name : str
-        The option's name, for messages (e.g. ``"--radius"``).
-
-    Returns
-    -------
-    float
-        The length [m], finite and ``> 0``.
-
-    Raises
-    ------
-    ParameterError
-        Another dimension (``"3kg"``), an unknown unit, a value that is not positive or
-        beyond floating-point range (``"1e400mm"``); the message names ``name`` and what it
-        expects.
-    ParameterTypeError
-        Neither a string nor a real number.
-
-    Examples
-    --------
-    >>> parse_length("23.25mm")
-    0.02325
-    >>> parse_length(0.5)
-    0.5
-    """
-    return _parse(value, "length", name)
-
-
-def parse_mass(value, name: str = "mass") -> float:
-    """A mass in kilograms from ``"7.5g"``, ``"0.45 kg"``, ``"1 lb"`` or a plain number (kg).
-
-    As :func:`parse_length`, for masses.
-
-    Examples
-    --------
-    >>> parse_mass("7.5g")
-    0.0075
-    """
-    return _parse(value, "mass", name)
-
-
-def parse_acceleration(value, name: str = "gravity") -> float:
-    """An acceleration in m/s^2 from ``"9.81m/s^2"``, ``"1.62 m/s**2"``, ``"1g0"`` (standard
-    gravity) or a plain number (m/s^2).
-
-    As :func:`parse_length`, for accelerations.  (``"1g"`` is a gram, a mass; standard
-    gravity is ``g0``.)
-
-    Examples
-    --------
-    >>> parse_acceleration("9.81m/s^2")
-    9.81
-    """
-    return _parse(value, "acceleration", name)
 
 
 # ---------------------------------------------------------------------------- named disks
@@ -530,3 +377,4 @@ def result_html(title: str, disk: Disk | None, values: dict, kinds: dict,
         rows.append(tuple(row))
     header = ("field", "value", "unit") + (("SI value", "SI unit") if si else ())
     return html_table(title, header, rows, note)
+

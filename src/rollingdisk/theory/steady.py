@@ -299,11 +299,23 @@ def _build(disk: Disk, ground: str, theta0: float, Omega0: float) -> SteadyMotio
                         F_y=F_y, v_C=abs(v_Cx0), v_Cx0=v_Cx0, v_Cy0=0.0, y_P0=y_P)
 
 
+def _paper(disk: Disk, kind: str, value, name: str):
+    """A dimensional argument in the paper's units: text with a unit or a pint quantity
+    converted with the disk's scale (:func:`rollingdisk.model.inputs.to_paper`); a number
+    as it is (checked by the caller, with its own message)."""
+    if isinstance(value, str) or hasattr(value, "dimensionality"):
+        return disk.to_paper(kind, value, name)
+    return value
+
+
 def steady_motion(disk: Disk, ground: str, theta0: float, *, Omega0: float | None = None,
-                  r_C: float | None = None, r_P: float | None = None) -> SteadyMotion:
+                  r_C: float | None = None, r_P: float | None = None,
+                  omega30: float | None = None) -> SteadyMotion:
     """The steady circular motion (or spin in place) at inclination ``theta0``.
 
-    Implements eqs. (24)-(35): give exactly one of ``Omega0``, ``r_C``, ``r_P``.
+    Implements eqs. (24)-(35): give exactly one of ``Omega0``, ``r_C``, ``r_P``,
+    ``omega30``.  For a disk with a physical scale each may also be a pint quantity or text
+    with a unit (``"30 rad/s"``, ``"5 cm"``; :mod:`rollingdisk.model.inputs`).
 
     Parameters
     ----------
@@ -317,6 +329,10 @@ def steady_motion(disk: Disk, ground: str, theta0: float, *, Omega0: float | Non
         Signed radius of the circle of C (of P).  Rough ground only: ``Omega0^2`` then
         follows from eq. (31) (corrected form), and ``Omega0 > 0`` is returned (``-Omega0``
         is the same motion run backwards).
+    omega30 : float, optional
+        Spin ``omega30`` about the symmetry axis, non-zero: ``Omega0 = omega30 /
+        cos(theta0)`` (eq. 3), the second coordinate of the (theta0, omega30) plane of the
+        maps and the sweeps.
 
     Raises
     ------
@@ -351,13 +367,19 @@ def steady_motion(disk: Disk, ground: str, theta0: float, *, Omega0: float | Non
     if not isinstance(disk, Disk):
         raise ParameterError(f"disk must be a Disk, got {type(disk).__name__}")
     theta0 = _check_theta0(disk, theta0)
-    given = [(n, v) for n, v in (("Omega0", Omega0), ("r_C", r_C), ("r_P", r_P))
-             if v is not None]
+    given = [(n, v) for n, v in (("Omega0", Omega0), ("r_C", r_C), ("r_P", r_P),
+                                 ("omega30", omega30)) if v is not None]
     if len(given) != 1:
-        raise ParameterError("give exactly one of Omega0, r_C, r_P "
-                         f"(got {', '.join(n for n, _ in given) or 'none'})")
+        raise ParameterError("give exactly one of Omega0, r_C, r_P, omega30 "
+                             f"(got {', '.join(n for n, _ in given) or 'none'})")
     name, value = given[0]
-    value = check_real(name, value)
+    kind = "length" if name in ("r_C", "r_P") else "angular_speed"
+    value = check_real(name, _paper(disk, kind, value, name))
+    if name == "omega30":
+        if value == 0.0:
+            raise NoSteadyMotion("omega30 = 0 is no steady circle (Omega0 = omega30 / "
+                                 "cos(theta0) = 0): for a straight line use straight_line()")
+        name, value = "Omega0", value / math.cos(theta0)  # eq. (3)
     h = disk.h
     ht = h_tilde(h, theta0)
     s, c = math.sin(theta0), math.cos(theta0)
@@ -429,7 +451,10 @@ def straight_line(disk: Disk, ground: str, omega0: float, *, v_Cx0: float | None
     disk : Disk
     ground : {"rough", "smooth"}
     omega0 : float
-        Rolling rate ``d phi/dt = omega20`` (``omega30 = 0``, ``Omega0 = 0``).
+        Rolling rate ``d phi/dt = omega20`` (``omega30 = 0``, ``Omega0 = 0``).  For a disk
+        with a physical scale also a pint quantity or text with a unit: an angular speed
+        (``"10 rad/s"``) or the speed of C rolling without slip (``"0.3 m/s"``, ``v_C =
+        a d phi/dt``, eq. 18).
     v_Cx0, v_Cy0 : float, optional
         Velocity of C in Cxyz.  Rough ground: fixed by no slip, ``v_Cx0 = omega0``,
         ``v_Cy0 = 0`` (eq. 18); other values raise :class:`NoSteadyMotion`.  Smooth ground:
@@ -449,7 +474,9 @@ def straight_line(disk: Disk, ground: str, omega0: float, *, v_Cx0: float | None
     ground = check_ground(ground)
     if not isinstance(disk, Disk):
         raise ParameterError(f"disk must be a Disk, got {type(disk).__name__}")
-    omega0 = check_real("omega0", omega0)
+    omega0 = check_real("omega0", _paper(disk, "rolling_rate", omega0, "omega0"))
+    v_Cx0 = None if v_Cx0 is None else _paper(disk, "speed", v_Cx0, "v_Cx0")
+    v_Cy0 = _paper(disk, "speed", v_Cy0, "v_Cy0")
     if isinstance(lean, bool) or lean not in (1, -1):
         raise ParameterError(f"lean must be 1 or -1, got {lean!r}")
     if theta0 is not None:
