@@ -384,7 +384,7 @@ def test_a_client_that_leaves_early_puts_no_traceback_in_the_log(monkeypatch, ca
 @pytest.mark.filterwarnings("error")
 @pytest.mark.parametrize("extra, status, says", [
     (["--alpha0", "1.5707"], "completed", "RuntimeWarning: invalid value encountered in sqrt"),
-    (["--creep", "1e9"], "failed", "UserWarning: lsoda: Repeated convergence failures"),
+    (["--creep", "1e9a"], "failed", "UserWarning: lsoda: Repeated convergence failures"),
 ])
 def test_euler_disk_on_extreme_values_says_its_warnings_in_the_result(capsys, extra, status,
                                                                        says):

@@ -221,3 +221,13 @@ def test_full_control_takes_heyokas_steps(tol):
                   error_control="full")
     assert tr.status == "completed"
     assert abs(tr.n_steps - n_hy) <= max(2, 0.01 * n_hy)
+
+
+def test_a_series_beyond_float_range_fails_and_never_completes():
+    """omega3 = 1e150: the Taylor step's series is not finite; the run ends 'failed' as
+    DOP853's does, never 'completed' with NaN states (which the CLI then refused)."""
+    rd.jit_compile()
+    y0 = [0, 0, 0, 0.3, 0, 0, 0, 1e150]
+    for method in ("taylor", "dop853"):
+        tr = rd.simulate(rd.Disk(0.1), "rough", (0, 1), y0, method=method)
+        assert tr.status == "failed" and np.all(np.isfinite(tr.y)), method

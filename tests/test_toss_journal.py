@@ -283,6 +283,6 @@ def test_a_long_ensemble_shows_progress_on_a_terminal_only(fake, capsys, monkeyp
     monkeypatch.setattr(sys.stderr, "isatty", lambda: True, raising=False)
     assert main(["toss", "--h", "0.1", "--n", "5"]) == 0
     err = capsys.readouterr().err
-    assert "tossing [" in err and "5/5" in err and not made[-1].quiet
+    assert "tosses [" in err and "5/5" in err and not made[-1].quiet
     assert main(["toss", "--h", "0.1", "--n", "5", "--json"]) == 0
     assert "tossing" not in capsys.readouterr().err and made[-1].quiet

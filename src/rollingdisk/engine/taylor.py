@@ -673,6 +673,12 @@ def _tay_integrate(rough, h, t0, y0, t_end, rtol, atolv, max_step, use_guards, s
             status = FAILED
             break
         _tay_eval(J, P, dt, y_new)
+        finite = True  # a series beyond float range (omega3 = 1e150) fails, never completes
+        for q in range(y_new.shape[0]):
+            finite = finite and math.isfinite(y_new[q])
+        if not finite:
+            status = FAILED
+            break
         fired = -1
         x_hit = dt
         if any_guard:
