@@ -794,6 +794,14 @@ class _Motion:
         s = _free_from_contact(h, yend, side)
         if tr.status in self.stop_at:
             return ("end", tr.status, tr.message, t, s)
+        if tr.status in ("completed", "time-budget", "step-budget"):
+            held = self._held_on_rim(tr)
+            if held is not None:
+                k = held
+                s = _free_from_contact(h, np.array(tr.y[:, k]), side)
+                s[6:12] = 0.0
+                return ("end", "at-rest", f"at rest on rim edge {side:+d} at t = "
+                        f"{tr.t[k]:.12g}, held by rolling resistance", float(tr.t[k]), s)
         if tr.status == "completed":
             if h > 0.0 and abs(s[4]) < 1e-6 and _kinetic(h, s) <= self.rest_energy:
                 return self._line(t, s)
@@ -810,6 +818,19 @@ class _Motion:
             s2, side2 = self._strike(t, s, -side, "rim-change")
             return self._after_impact(t, s2, side2)
         return ("end", tr.status, tr.message, t, s)
+
+    @staticmethod
+    def _held_on_rim(tr):
+        """Index of the point from which the disk rests on its rim edge to the end of the
+        contact segment ``tr`` (rolling, the rolling resistance stuck, every velocity 0 to
+        1e-12: the stuck moment holds it there for good), else None."""
+        still = (tr.mode & 5 == 4) & np.all(np.abs(tr.y[[2, 3, 7, 8, 9]]) <= 1e-12, axis=0)
+        if not still[-1]:
+            return None
+        k = tr.t.size - 1
+        while k > 0 and still[k - 1]:
+            k -= 1
+        return k
 
     def _start_force(self, s, side, y):
         """``F_z`` in the mode :func:`simulate_coulomb` starts in at ``y``: rolling if the
