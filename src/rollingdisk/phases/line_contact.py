@@ -38,7 +38,8 @@ import numpy as np
 
 __all__ = ["LINE_STATE", "SLIDE", "STICK_P", "STICK_M", "ROLL", "ROLL_STUCK", "MODE_NAMES",
            "line_params", "line_forces", "line_rhs", "line_energy", "line_from_free",
-           "free_from_line", "capture_slips", "LineSegment", "LineOutcome", "run_line_contact"]
+           "free_from_line", "capture_slips", "rests_on_rim", "LineSegment", "LineOutcome",
+           "run_line_contact"]
 
 #: State of line contact: centre on the plane, angles, velocity of C in Cxyz, spins, and the
 #: energy dissipated since the phase began.
@@ -411,8 +412,12 @@ class LineOutcome:
     dissipated: float
 
 
+class _Budget(Exception):
+    pass
+
+
 def run_line_contact(h, ground, t0, t1, s, *, rtol=1e-10, atol=1e-12, slip_tol=1e-9,
-                     max_events=10_000):
+                     max_events=10_000, max_rhs=200_000):
     """Integrate line contact from the free state ``s`` (upright, touching along the
     tread) until rest, rocking onto a rim edge, or ``t1``.
 
@@ -431,8 +436,9 @@ def run_line_contact(h, ground, t0, t1, s, *, rtol=1e-10, atol=1e-12, slip_tol=1
     slip_tol : float
         Slip (relative to ``1 + |v| + |omega|`` at the start) at or below which a corner
         counts as sticking, and spin ``|omega2|`` below which rolling resistance may hold.
-    max_events : int
-        Budget of sub-phase changes; beyond it ``"failed"``.
+    max_events, max_rhs : int
+        Budgets of sub-phase changes and of right-hand-side evaluations; beyond either
+        ``"failed"`` (a known stall: a slip crossing zero sideways while spinning).
 
     Returns
     -------
@@ -449,6 +455,13 @@ def run_line_contact(h, ground, t0, t1, s, *, rtol=1e-10, atol=1e-12, slip_tol=1
     n_ev = 0
     floor = slip_tol * (1.0 + math.hypot(y[4], y[5]) + abs(y[6]) + abs(y[7]))
     exclude, no_stuck = (), False
+    n_rhs = [0]
+
+    def rhs(t_, y_, p_):
+        n_rhs[0] += 1
+        if n_rhs[0] > max_rhs:
+            raise _Budget
+        return line_rhs(t_, y_, p_)
 
     def out(status, msg, side=0):
         return segs, LineOutcome(status, t, free_from_line(y), side, msg, float(y[8]))
@@ -473,8 +486,11 @@ def run_line_contact(h, ground, t0, t1, s, *, rtol=1e-10, atol=1e-12, slip_tol=1
             return out("end", f"reached t = {t:.12g} on the tread")
         ev = _events(h, p, y)
         try:
-            sol = solve_ivp(line_rhs, (t, t1), y, method="DOP853", rtol=rtol, atol=atol,
+            sol = solve_ivp(rhs, (t, t1), y, method="DOP853", rtol=rtol, atol=atol,
                             events=ev, args=(p,))
+        except _Budget:
+            return out("failed", f"line contact: {max_rhs} right-hand-side evaluations "
+                       f"by t = {t:.12g} (the integration stalls)")
         except np.linalg.LinAlgError:
             return out("failed", f"line contact: no contact forces after t = {t:.12g} "
                        "(Painleve's paradox of the sliding corners)")
@@ -503,6 +519,21 @@ def run_line_contact(h, ground, t0, t1, s, *, rtol=1e-10, atol=1e-12, slip_tol=1
             y = _snap(h, y, (7,))  # the sliding corner's slip is exactly 2h |omega3|
         elif name == "rolling stops":
             y = _snap(h, y, (6,))
+
+
+def rests_on_rim(tr):
+    """Index of the point of a rim-edge contact segment ``tr``
+    (:func:`rollingdisk.simulate_coulomb`) from which the disk rests there to its end:
+    rolling with the rolling resistance stuck (mode bits ``& 5 == 4``) and every velocity
+    zero to 1e-12, so that the stuck moment (within ``c F_z``) holds it for good; else
+    None."""
+    still = (tr.mode & 5 == 4) & np.all(np.abs(tr.y[[2, 3, 7, 8, 9]]) <= 1e-12, axis=0)
+    if not still[-1]:
+        return None
+    k = tr.t.size - 1
+    while k > 0 and still[k - 1]:
+        k -= 1
+    return k
 
 
 def _snap(h, y, idx):

@@ -11,6 +11,9 @@ Wires the pieces that each stop at a guard into one run (``docs/motion.md``):
 * the Newton-Coulomb impact law at the touching rim point
   (:func:`~rollingdisk.phases.impact.impact`), also when an upright disk changes rim
   edge (``theta`` through 0, ``h > 0``);
+* line contact when an upright disk stands on its tread (its rim changes accumulate, or
+  it starts there): both rim edges down under set-valued Coulomb friction
+  (:mod:`rollingdisk.phases.line_contact`), until rest or it tips onto one rim edge;
 * a face impact when the disk falls flat, then the flat disk sliding and spinning on its
   face with Coulomb friction under uniform pressure until it stops.
 
@@ -48,6 +51,7 @@ from rollingdisk.phases.line_contact import (
     free_from_line,
     line_energy,
     line_from_free,
+    rests_on_rim,
     run_line_contact,
 )
 from rollingdisk.util.checks import check_int, check_real, check_span
@@ -85,10 +89,12 @@ class ImpactRecord:
     ----------
     t : float
         Time [``sqrt(a/g)``].
-    kind : {"rim", "rim-change", "face", "tread"}
+    kind : {"rim", "rim-change", "face", "tread", "tread-slip"}
         A rim point landing from flight, the other rim edge of an upright disk, the face
-        of a disk falling flat, the tread line of a disk whose rim changes accumulated
-        (the rule of :meth:`_Motion._roll_on_tread`).
+        of a disk falling flat; entering line contact (:meth:`_Motion._line`): the residual
+        rocking projected out (``"tread"``: impulse the vertical momentum removed, no
+        friction), corner slips below ``v_capture`` stopped (``"tread-slip"``: tangential
+        impulse ``P``, normal impulse ``sum |P_s|/mu``, inside Coulomb's cone).
     impulse : ndarray, shape (3,)
         ``(Lam_x, Lam_y, Lam_N)`` in Cxyz [``m sqrt(a g)``]; for a face impact the vertical
         momentum removed.
@@ -183,7 +189,8 @@ class MotionResult:
     ground : Coulomb
     segments : tuple
         In time order: :class:`~rollingdisk.Trajectory` (contact on a rim edge),
-        :class:`FlightSegment`, :class:`FlatSegment`.
+        :class:`FlightSegment`, :class:`FlatSegment`,
+        :class:`~rollingdisk.phases.line_contact.LineSegment` (upright on the tread).
     transitions : tuple of ModeChange
         Every change of phase (rolling, sliding, flight, flat, rest), rolling/sliding
         changes inside contact segments included.
@@ -528,7 +535,8 @@ def simulate_to_rest(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         further impact is plastic until a contact phase lasts longer than the window.
     rest_energy : float
         Kinetic energy [``m g a``] below which a disk upright on its tread (at a rim
-        change, or at the end of a contact phase) is at rest.
+        change, or at the end of a contact phase) enters line contact (which decides
+        whether and when it rests).
     rtol, atol : float
         Tolerances of the contact phases.
     max_steps : int
@@ -795,7 +803,7 @@ class _Motion:
         if tr.status in self.stop_at:
             return ("end", tr.status, tr.message, t, s)
         if tr.status in ("completed", "time-budget", "step-budget"):
-            held = self._held_on_rim(tr)
+            held = rests_on_rim(tr)
             if held is not None:
                 k = held
                 s = _free_from_contact(h, np.array(tr.y[:, k]), side)
@@ -818,19 +826,6 @@ class _Motion:
             s2, side2 = self._strike(t, s, -side, "rim-change")
             return self._after_impact(t, s2, side2)
         return ("end", tr.status, tr.message, t, s)
-
-    @staticmethod
-    def _held_on_rim(tr):
-        """Index of the point from which the disk rests on its rim edge to the end of the
-        contact segment ``tr`` (rolling, the rolling resistance stuck, every velocity 0 to
-        1e-12: the stuck moment holds it there for good), else None."""
-        still = (tr.mode & 5 == 4) & np.all(np.abs(tr.y[[2, 3, 7, 8, 9]]) <= 1e-12, axis=0)
-        if not still[-1]:
-            return None
-        k = tr.t.size - 1
-        while k > 0 and still[k - 1]:
-            k -= 1
-        return k
 
     def _start_force(self, s, side, y):
         """``F_z`` in the mode :func:`simulate_coulomb` starts in at ``y``: rolling if the
@@ -870,13 +865,10 @@ class _Motion:
                 and t - last[0].t <= self.zeno_window)
 
     def _line(self, t, s):
-        """Line contact (:mod:`rollingdisk.phases.line_contact`): the disk upright on its
-        tread, both rim edges down, under set-valued Coulomb friction at each, until rest,
-        rocking onto one rim edge, ``chunk`` or the end time.  Entered from rocking, the
-        state is projected onto the line (``theta = 0``, ``Z_C = 1``, ``V_Z = omega1 = 0``):
-        the limit of the accumulating rim changes, their friction (at most ``mu`` times their
-        vanishing normal impulses) neglected; the energy of the residual rocking is an
-        impact loss (kind ``"tread"``, impulse the vertical momentum removed)."""
+        """Line contact (:func:`run_line_contact`) until rest, tipping onto a rim edge,
+        ``chunk`` or the end.  Entered from rocking, the state is projected onto the line
+        (the limit of the accumulating rim changes, their friction neglected: an impact
+        ``"tread"``), then slips below ``v_capture`` stop (:func:`capture_slips`)."""
         h = self.h
         s1 = free_from_line(line_from_free(s))
         if s[4] != 0.0 or s[2] != 1.0 or s[8] != 0.0 or s[9] != 0.0:
