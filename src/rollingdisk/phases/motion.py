@@ -11,6 +11,9 @@ Wires the pieces that each stop at a guard into one run (``docs/motion.md``):
 * the Newton-Coulomb impact law at the touching rim point
   (:func:`~rollingdisk.phases.impact.impact`), also when an upright disk changes rim
   edge (``theta`` through 0, ``h > 0``);
+* line contact when an upright disk stands on its tread (its rim changes accumulate, or
+  it starts there): both rim edges down under set-valued Coulomb friction
+  (:mod:`rollingdisk.phases.line_contact`), until rest or it tips onto one rim edge;
 * a face impact when the disk falls flat, then the flat disk sliding and spinning on its
   face with Coulomb friction under uniform pressure until it stops.
 
@@ -42,6 +45,14 @@ from rollingdisk.phases.impact import (
     impact,
     lowest_point,
 )
+from rollingdisk.phases.line_contact import (
+    capture_slips,
+    free_from_line,
+    line_energy,
+    line_from_free,
+    rests_on_rim,
+    run_line_contact,
+)
 from rollingdisk.phases.touchdown import Spent, touchdown
 from rollingdisk.util.checks import check_int, check_real, check_span
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
@@ -50,7 +61,7 @@ __all__ = ["simulate_to_rest", "MotionResult", "FlightSegment", "FlatSegment",
            "ModeChange", "ImpactRecord", "flat_friction", "PHASES", "GUARDS"]
 
 #: Phases of a motion, as named in :attr:`MotionResult.transitions`.
-PHASES = ("rolling", "sliding", "flight", "flat", "rest")
+PHASES = ("rolling", "sliding", "flight", "flat", "tread", "rest")
 #: The guards of the contact phase that ``stop_at`` may name.
 GUARDS = ("lift-off", "edge-contact", "fell-flat")
 
@@ -78,10 +89,12 @@ class ImpactRecord:
     ----------
     t : float
         Time [``sqrt(a/g)``].
-    kind : {"rim", "rim-change", "face", "tread"}
+    kind : {"rim", "rim-change", "face", "tread", "tread-slip"}
         A rim point landing from flight, the other rim edge of an upright disk, the face
-        of a disk falling flat, the tread line of a disk whose rim changes accumulated
-        (the rule of :meth:`_Motion._roll_on_tread`).
+        of a disk falling flat; entering line contact (:meth:`_Motion._line`): the residual
+        rocking projected out (``"tread"``: impulse the vertical momentum removed, no
+        friction), corner slips below ``v_capture`` stopped (``"tread-slip"``: tangential
+        impulse ``P``, normal impulse ``sum |P_s|/mu``, inside Coulomb's cone).
     impulse : ndarray, shape (3,)
         ``(Lam_x, Lam_y, Lam_N)`` in Cxyz [``m sqrt(a g)``]; for a face impact the vertical
         momentum removed.
@@ -176,7 +189,8 @@ class MotionResult:
     ground : Coulomb
     segments : tuple
         In time order: :class:`~rollingdisk.Trajectory` (contact on a rim edge),
-        :class:`FlightSegment`, :class:`FlatSegment`.
+        :class:`FlightSegment`, :class:`FlatSegment`,
+        :class:`~rollingdisk.phases.line_contact.LineSegment` (upright on the tread).
     transitions : tuple of ModeChange
         Every change of phase (rolling, sliding, flight, flat, rest), rolling/sliding
         changes inside contact segments included.
@@ -494,7 +508,8 @@ def simulate_to_rest(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         further impact is plastic until a contact phase lasts longer than the window.
     rest_energy : float
         Kinetic energy [``m g a``] below which a disk upright on its tread (at a rim
-        change, or at the end of a contact phase) is at rest.
+        change, or at the end of a contact phase) enters line contact (which decides
+        whether and when it rests).
     rtol, atol : float
         Tolerances of the contact phases.
     max_steps : int
@@ -618,7 +633,8 @@ class _Motion:
                                      f"Z = {H:.3g} < 0); a launch state needs Z_C >= "
                                      f"|cos theta| + h |sin theta|")
             self.E0 = _state_energy(h, s)
-            nxt = ("flight", s, None)
+            upright = h > 0.0 and s[4] == 0.0 and s[2] == 1.0 and s[8] == 0.0 == s[9]
+            nxt = ("line", s, None) if upright else ("flight", s, None)
         else:
             if not abs(y[5]) < 0.5 * math.pi:
                 raise ParameterError(f"y0: theta must lie in (-pi/2, pi/2) on a rim edge, "
@@ -651,6 +667,8 @@ class _Motion:
                 out = self._contact(t, s, side)
             elif kind == "face":
                 out = self._flat(t, s)
+            elif kind == "line":
+                out = self._line(t, s)
             else:  # pragma: no cover
                 raise AssertionError(kind)
             if out[0] == "end":
@@ -735,7 +753,7 @@ class _Motion:
         h = self.h
         y = _contact_from_free(s, side)
         if _kinetic(h, s) <= self.rest_energy and h > 0.0 and abs(s[4]) < 1e-6:
-            return self._rest_on_tread(t, s)
+            return self._line(t, s)
         if self._start_force(s, side, y) <= 0.0 and self._separates(s):
             # the plane cannot hold it: it flies off at zero normal velocity
             if "lift-off" in self.stop_at:
@@ -761,9 +779,17 @@ class _Motion:
         s = _free_from_contact(h, yend, side)
         if tr.status in self.stop_at:
             return ("end", tr.status, tr.message, t, s)
+        if tr.status in ("completed", "time-budget", "step-budget"):
+            held = rests_on_rim(tr)
+            if held is not None:
+                k = held
+                s = _free_from_contact(h, np.array(tr.y[:, k]), side)
+                s[6:12] = 0.0
+                return ("end", "at-rest", f"at rest on rim edge {side:+d} at t = "
+                        f"{tr.t[k]:.12g}, held by rolling resistance", float(tr.t[k]), s)
         if tr.status == "completed":
             if h > 0.0 and abs(s[4]) < 1e-6 and _kinetic(h, s) <= self.rest_energy:
-                return self._rest_on_tread(t, s)
+                return self._line(t, s)
             if t >= self.t1:
                 return ("end", "completed", tr.message, t, s)
             return ("next", t, "contact", s, side)
@@ -772,10 +798,8 @@ class _Motion:
         if tr.status == "fell-flat":
             return ("next", t, "face", s, None)
         if tr.status == "edge-contact":
-            if _kinetic(h, s) <= self.rest_energy:
-                return self._rest_on_tread(t, s)
-            if self._rim_changes_accumulate(t):
-                return self._roll_on_tread(t, s)
+            if _kinetic(h, s) <= self.rest_energy or self._rim_changes_accumulate(t):
+                return self._line(t, s)
             s2, side2 = self._strike(t, s, -side, "rim-change")
             return self._after_impact(t, s2, side2)
         return ("end", tr.status, tr.message, t, s)
@@ -808,17 +832,6 @@ class _Motion:
                 return True
         return False
 
-    def _rest_on_tread(self, t, s):
-        """Zeno rule of the rocking disk: upright on its tread with kinetic energy below
-        ``rest_energy``, it stops (that energy counts as an impact loss)."""
-        h = self.h
-        rest = s.copy()
-        rest[2], rest[4] = 1.0, 0.0
-        rest[6:12] = 0.0
-        lost = _state_energy(h, s) - _state_energy(h, rest)
-        self._impact_record(t, "rim-change", np.zeros(3), lost, 0.0)
-        return ("end", "at-rest", f"at rest upright on the tread at t = {t:.12g}", t, rest)
-
     def _rim_changes_accumulate(self, t):
         """Zeno rule of the rim changes: the last ``zeno_count`` impacts were all rim changes
         within ``zeno_window`` (the rocking has died out, or the disk rolls upright on its
@@ -828,50 +841,37 @@ class _Motion:
         return (len(last) == n and all(x.kind == "rim-change" for x in last)
                 and t - last[0].t <= self.zeno_window)
 
-    def _roll_on_tread(self, t, s):
-        """The disk stands on its tread line (``theta = 0``) and rolls on it to rest.
-
-        The rule, stated once (docs/motion.md): the tread line takes a plastic, sticking
-        impulse that conserves the angular momentum about itself, ``L = k2^2 omega2 +
-        v_Cx`` (m = a = 1, ``v_Cx`` the velocity of C across the line): the rocking
-        (``omega1``), the turning (``omega3``), the vertical and the sideways velocity
-        are removed and the disk rolls with ``omega2' = L / (1 + k2^2)`` (the rolling
-        state of least energy with that ``L``, so the impulse never creates energy).
-        Rolling upright under the rolling-resistance moment ``c F_z`` (``F_z = 1``),
-        ``d(3/4 omega2^2)/dt = -c |omega2|``: it stops after ``1.5 |omega2'| / c`` (at once
-        if ``3/4 omega2'^2 <= rest_energy``; never if ``c = 0``)."""
+    def _line(self, t, s):
+        """Line contact (:func:`run_line_contact`) until rest, tipping onto a rim edge,
+        ``chunk`` or the end.  Entered from rocking, the state is projected onto the line
+        (the limit of the accumulating rim changes, their friction neglected: an impact
+        ``"tread"``), then slips below ``v_capture`` stop (:func:`capture_slips`)."""
         h = self.h
-        psi = s[3]
-        cp, sp = math.cos(psi), math.sin(psi)
-        v_x = s[6] * cp + s[7] * sp
-        w2 = (K2 * s[10] + v_x) / (1.0 + K2)
-        if 0.75 * w2 * w2 <= self.rest_energy:  # nothing left to roll: at rest (rule 3)
-            w2 = 0.0
-        s1 = s.copy()
-        s1[2], s1[4] = 1.0, 0.0
-        s1[6], s1[7], s1[8] = w2 * cp, w2 * sp, 0.0
-        s1[9], s1[10], s1[11] = 0.0, w2, 0.0
-        lost = _state_energy(h, s) - _state_energy(h, s1)
-        self._impact_record(t, "tread", s1[6:9] - s[6:9], lost, 0.0)
-        self._enter(t, "rolling")
-        c = float(self.ground.coefficients[0])
-        dt = 0.0 if w2 == 0.0 else math.inf if c == 0.0 else 1.5 * abs(w2) / c
-        t_end = min(t + dt, self.t1)
-        tau = t_end - t
-        w_end = math.copysign(max(0.0, abs(w2) - c * tau / 1.5), w2) if t_end < t + dt else 0.0
-        dist = 0.5 * (w2 + w_end) * tau  # v_Cx = omega2 and d phi/dt = omega2 at theta = 0
-        s2 = s1.copy()
-        s2[0] += dist * cp
-        s2[1] += dist * sp
-        s2[5] += dist
-        s2[6], s2[7], s2[10] = w_end * cp, w_end * sp, w_end
-        self.D += 0.75 * (w2 * w2 - w_end * w_end)
-        self._check(_state_energy(h, s2))
-        where = f"rolling upright on its tread from t = {t:.12g} (rim changes accumulated)"
-        if t + dt <= self.t1:
-            return ("end", "at-rest", f"at rest upright on the tread at t = {t_end:.12g}, "
-                    f"{where}", t_end, s2)
-        return ("end", "completed", f"reached t = {t_end:.12g} {where}", t_end, s2)
+        s1 = free_from_line(line_from_free(s))
+        if s[4] != 0.0 or s[2] != 1.0 or s[8] != 0.0 or s[9] != 0.0:
+            lost = _state_energy(h, s) - _state_energy(h, s1)
+            self._impact_record(t, "tread", np.array([0.0, 0.0, -s[8]]), lost, 0.0)
+            s1, P, lost = capture_slips(h, s1, self.mu, self.v_capture)
+            if lost != 0.0 or P[2] != 0.0:
+                self._impact_record(t, "tread-slip", P, lost, 0.0)
+        self._enter(t, "tread")
+        t_stop = min(self.t1, t + self.chunk)
+        segs, out = run_line_contact(h, self.ground, t, t_stop, s1, rtol=self.rtol,
+                                     atol=self.atol)
+        for g in segs:
+            self.segments.append(g)
+            self._check(line_energy(h, g.states) + g.states[8])
+        self.D += out.dissipated
+        t2, s2 = out.t, out.state
+        if out.status == "rest":
+            return ("end", "at-rest", out.message, t2, s2)
+        if out.status == "rocking":
+            return ("next", t2, "contact", s2, out.side)
+        if out.status == "failed":
+            return ("end", "failed", out.message, t2, s2)
+        if t2 >= self.t1:
+            return ("end", "completed", f"reached t = {t2:.12g} on the tread", t2, s2)
+        return ("next", t2, "line", s2, None)
 
     def _flat(self, t, s):
         h = self.h

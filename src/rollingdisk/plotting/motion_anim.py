@@ -20,6 +20,8 @@ from pathlib import Path
 
 import numpy as np
 
+from rollingdisk.phases.line_contact import MODE_NAMES as LINE_MODES
+from rollingdisk.phases.line_contact import LineSegment
 from rollingdisk.phases.motion import FlatSegment, FlightSegment, MotionResult
 from rollingdisk.plotting.animation import (
     FRAMES_RANGE,
@@ -101,8 +103,9 @@ def _flight_states(seg: FlightSegment, t: np.ndarray) -> np.ndarray:
 
 def _pose_of_segment(h: float, seg, t: np.ndarray, n: int) -> list[DiskPose]:
     """The poses of one segment at the times ``t`` inside it."""
-    if isinstance(seg, FlightSegment | FlatSegment):
-        S = _flight_states(seg, t) if isinstance(seg, FlightSegment) else _flat_states(seg, t)
+    if isinstance(seg, FlightSegment | FlatSegment | LineSegment):
+        S = (_flat_states(seg, t) if isinstance(seg, FlatSegment) else
+             np.asarray(seg.state(np.asarray(t, float)), float).reshape(12, -1).T)
         return [disk_pose(h, s[0], s[1], s[3], s[4], s[5], n=n, Z_C=s[2]) for s in S]
     ts = np.asarray(seg.t, float)  # contact: Z_C from the contact constraint (eq. 7)
     v = {k: np.interp(t, ts, trajectory_series(seg, k)) for k in _ANGLES}
@@ -176,6 +179,9 @@ def motion_phases(result: MotionResult, times) -> list[str]:
         elif isinstance(seg, FlatSegment):
             moving = np.interp(ti, seg.t, seg.speed) + np.interp(ti, seg.t, seg.spin) > 0
             out.append("flat" if moving else "rest")
+        elif isinstance(seg, LineSegment):
+            k = int(np.clip(np.searchsorted(seg.t, ti, side="right") - 1, 0, seg.t.size - 1))
+            out.append(LINE_MODES[int(seg.mode[k]) & 3])
         else:
             k = int(np.clip(np.searchsorted(seg.t, ti, side="right") - 1, 0, seg.t.size - 1))
             out.append(MODE_NAMES[int(seg.mode[k])])
@@ -194,9 +200,9 @@ def motion_paths(result: MotionResult) -> tuple[np.ndarray, ...]:
             t = np.linspace(seg.t0, seg.t1, _FLIGHT_SAMPLES)
             S = _flight_states(seg, t)
             parts.append((t, t * np.nan, t * np.nan, S[:, 0], S[:, 1]))
-        elif isinstance(seg, FlatSegment):
+        elif isinstance(seg, FlatSegment | LineSegment):
             t = np.asarray(seg.t, float)
-            S = _flat_states(seg, t)
+            S = _flat_states(seg, t) if isinstance(seg, FlatSegment) else seg.state(t).T
             parts.append((t, t * np.nan, t * np.nan, S[:, 0], S[:, 1]))
         else:
             t = np.asarray(seg.t, float)
