@@ -327,11 +327,12 @@ def _interrupt(argv, tmp_path, sig, after: float, marker: str | None = None):
 @pytest.mark.parametrize("sig,rc,word", [(signal.SIGINT, 130, "interrupted"),
                                          (signal.SIGTERM, 143, "terminated")])
 @pytest.mark.parametrize("argv", [
-    ["figures", "--out", "figs", "--scale", "1"],
+    # --progress: the markers waited for are progress lines, drawn unasked on a terminal only
+    ["figures", "--out", "figs", "--scale", "1", "--progress"],
     ["animate", "--theta0", "0.5", "--Omega0", "3", "--frames", "400", "--t-end", "5",
      "--out", "m.gif"],
-    ["atlas", "--quick", "--out", "at"],
-    ["euler-disk", "--out", "ed"],
+    ["atlas", "--quick", "--out", "at", "--progress"],
+    ["euler-disk", "--out", "ed", "--progress"],
 ], ids=["figures", "animate", "atlas", "euler-disk"])
 def test_a_signal_leaves_nothing(tmp_path, argv, sig, rc, word):
     """Ctrl-C or SIGTERM while the pictures are made: one line, the right status, no file,
