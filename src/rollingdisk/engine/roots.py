@@ -5,7 +5,7 @@ Every guard and event of a simulation is located by it: on the DOP853 dense outp
 (:func:`rollingdisk.engine.taylor._tay_locate`) and on scipy's dense output
 (:mod:`rollingdisk.ivp.drivers`).  The sweeps' batch kernels, which find a theta
 crossing every few steps on one polynomial whose derivative is free, use Newton kept in
-the bracket instead (:func:`rollingdisk.engine.taylor._tay_poly_root`; it starts from
+the bracket instead (:func:`rollingdisk.engine.taylor_jets._tay_poly_root`; it starts from
 :func:`_illinois_trial` and stops by :func:`_illinois_converged`).  The callers differ
 only in the function they evaluate, so the rule is split into three numba-compilable
 pieces that each caller's loop calls (passing the function in would keep the uncompiled
