@@ -33,7 +33,9 @@ from rollingdisk.engine.roots import (
     _illinois_converged,
     _illinois_trial,
 )
-from rollingdisk.model.geometry import _inertia
+
+# eq. (10), under the name the compiled namespace (numba_core) binds its compiled version by
+from rollingdisk.model.geometry import inertia as _inertia
 
 
 def _signed_h(h, th0):

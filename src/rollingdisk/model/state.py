@@ -33,7 +33,7 @@ def state_index(ground: str, name: str) -> int:
     return names.index(name)
 
 
-def _reduced_state(rough, y):
+def reduced_state(rough, y):
     """``(theta, omega1, omega2, omega3)`` out of a state vector of either ground, or of a
     reduced state (4 components, returned as they are)."""
     if y.shape[0] == 4:
@@ -41,6 +41,9 @@ def _reduced_state(rough, y):
     if rough:
         return y[3], y[5], y[6], y[7]
     return y[5], y[7], y[8], y[9]
+
+
+_reduced_state = reduced_state  # the name the kernels and compiled namespaces call it by
 
 
 def _shape_error(ground: str, y, name: str = "y") -> ParameterError:
