@@ -211,8 +211,8 @@ def _tay_jet4_smooth(h, y, J, A, P):
 # orders so that each convolution is computed once and shared, in scratch rows of A that
 # live in this frame.  Split per state, each piece would recompute or pass those partial
 # series, and nopython offers no closure or object to share them cheaply (a two-pass
-# version took 1.22-1.25x as long, see the docstring); tests/test_simulate_taylor.py holds
-# the jet to the model's kernels.
+# version is slower: docs/performance.md); tests/test_simulate_taylor.py holds the jet to
+# the model's kernels.
 def _tay_jet_rough(h, y, J, A, P):
     """:func:`_tay_jet` on rough ground (eqs. 1, 2, 37, 38), the convolutions fused.
 
@@ -221,8 +221,8 @@ def _tay_jet_rough(h, y, J, A, P):
     (indices 1..k-1 on both sides, all known from lower orders), summed in one loop with
     15 independent accumulators, and its two end terms (index 0 or k), added once the
     order-k values they need exist.  The step is bound by throughput, not by the latency
-    of each running sum (two passes, reduced rows then quadratures, took 1.22-1.25x as
-    long).  ``k theta_k = omega1_{k-1}`` and ``k psi_k = (omega3/c)_{k-1}``
+    of each running sum, so one pass with independent sums beats two (reduced rows, then
+    quadratures).  ``k theta_k = omega1_{k-1}`` and ``k psi_k = (omega3/c)_{k-1}``
     (eq. 2) replace the derivatives of the series of theta and psi.
     """
     for i in range(y.shape[0]):
@@ -356,8 +356,8 @@ def _tay_jet(rough, h, y, J, A, P):
     the auxiliary series.
 
     Rough ground: :func:`_tay_jet_rough`, the reduced rows and the quadratures in one fused
-    loop (the reduced jet :func:`_tay_rows_rough` followed by a separate quadrature pass
-    was measured 1.22-1.25x slower: 451 against 362 ns at order 12).  Smooth ground: the
+    loop (rather than the reduced jet :func:`_tay_rows_rough` followed by a separate
+    quadrature pass).  Smooth ground: the
     reduced rows (:func:`_tay_rows_smooth`), then the quadratures from them."""
     if rough:
         _tay_jet_rough(h, y, J, A, P)
@@ -477,9 +477,9 @@ def _tay_poly_root(c, deg, sg, off, xa, xb, fa, fb):
     (:func:`_tay_poly_d`): closer than that the sign of ``f`` is noise, and near a slow
     crossing that band is far wider than the spacing of doubles.  If that last point is
     past the root, it steps back toward ``xa`` by doubling distances to the first
-    admissible point.  From the secant point it takes 3-6 evaluations where the Illinois
-    rule (:mod:`rollingdisk.engine.roots`, which narrows the bracket to the spacing of
-    doubles) took 13-46 on the sweeps' theta crossings."""
+    admissible point.  From the secant point it needs a few evaluations, where the
+    Illinois rule (:mod:`rollingdisk.engine.roots`, which narrows the bracket to the
+    spacing of doubles) needs several times as many on the sweeps' theta crossings."""
     x = _illinois_trial(xa, xb, fa, fb)
     for _ in range(ILLINOIS_MAXITER):
         if _illinois_converged(xa, xb):

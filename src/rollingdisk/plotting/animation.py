@@ -403,7 +403,7 @@ def draw_scene(fig, tf, frames, paths, head: str | Callable[[int], str],
         ax.set_xlim(x0, x1)
         ax.set_ylim(y0, y1)
         ax.set_zlim(z0, z1)
-        # no axis machinery (ticks, grids and panes cost ~40 % of a frame): the plane
+        # no axis machinery (ticks, grids and panes are much of a frame's cost): the plane
         # Z = 0 is drawn as one polygon under everything else
         ax.set_axis_off()
         ax.add_collection3d(_plane(x0, x1, y0, y1))

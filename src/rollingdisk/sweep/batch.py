@@ -93,8 +93,8 @@ def _step4(rough, h, y, dt, K, ytmp, y_new):
     The arithmetic of :func:`rollingdisk.engine.dop853._step` (same coefficients, same order of
     the sums, so the same numbers), laid out for the batch: the stages of one component
     are contiguous and the right-hand side is the compiled kernel ``reduced_rhs`` returning
-    a tuple, which makes a step about 2.2 times cheaper than the general 4-to-10-component
-    step (measured in benchmarks/sweep.py)."""
+    a tuple, which makes a step cheaper than the general 4-to-10-component step
+    (benchmarks/sweep.py, docs/performance.md)."""
     for s in range(1, NS):
         for i in range(4):
             acc = 0.0

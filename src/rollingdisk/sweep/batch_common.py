@@ -78,9 +78,9 @@ def _summaries(out, status, t, max_d, cr, t_lo, t_hi, e_drift, n_steps):
 def _spread(n):
     """A permutation of 0..n-1 that spreads neighbours apart (the golden-ratio sequence
     ``frac(i phi)``, sorted): the threads of a ``prange`` take contiguous ranges of it, so
-    each gets a fair share of every part of the grid.  In grid order one thread took the
-    low tilts and the other the high ones (fewer and more steps): 2 threads gave 1.70x;
-    spread, 2.0x.  Each trajectory is computed alone, so the order changes no result."""
+    each gets a fair share of every part of the grid (in grid order one thread would take
+    the low tilts, with fewer steps, and another the high ones).  Each trajectory is
+    computed alone, so the order changes no result."""
     key = np.empty(n)
     for i in range(n):
         x = i * 0.6180339887498949

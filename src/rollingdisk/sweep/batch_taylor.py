@@ -369,7 +369,7 @@ def _lanes(rough, h, k1, k2, x0, theta_ref, a0, grow_lo, grow_hi, t_end, rtol, a
     W = LANES
     # every array of the lanes in one block, each row one vector on a cache line: their
     # relative places are then fixed, not the allocator's (with separate arrays the kernel's
-    # speed varied from process to process by up to 25 %; in one block, by 11 %)
+    # speed varied from process to process with where the allocator put them)
     rows = _lane_rows(18 * (P + 1) + 5 * _SAMPLES + _NREC + 15)
     J, r = rows[:4 * (P + 1)].reshape((4, P + 1, W)), 4 * (P + 1)
     A, r = rows[r:r + 14 * (P + 1)].reshape((14, P + 1, W)), r + 14 * (P + 1)
