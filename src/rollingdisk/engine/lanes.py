@@ -4,7 +4,7 @@ sampler, the energy and the common step, ``LANES`` trajectories per machine inst
 Nothing here is a second copy of a formula.  The scalar sources of
 :mod:`rollingdisk.engine.taylor_jets` (``_tay_jet4_rough``, ``_tay_jet4_smooth``,
 ``_tay_step_size``, ``_tay_sample``), ``_energy_sc`` and the common step
-:func:`rollingdisk.sweep.batch._tay_plain` are *traced*: each is run once, at compile
+:func:`rollingdisk.sweep.batch_taylor._tay_plain` are *traced*: each is run once, at compile
 time, on values of :class:`_Vec` instead of floats, and every arithmetic operation it
 performs emits the same operation on an LLVM vector ``<LANES x double>`` (one trajectory per
 lane).  The loops over the orders run in Python during the trace, so the code is unrolled for
@@ -520,7 +520,7 @@ def lane_samples(typingctx, P, S, h, J, A, dt, V):
 def lane_plain(typingctx, step, t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec,
                 ok):
     """The common step in every lane at once: ``step``
-    (:func:`rollingdisk.sweep.batch._tay_plain`, handed in by its caller so that this
+    (:func:`rollingdisk.sweep.batch_taylor._tay_plain`, handed in by its caller so that this
     module need not import the one that imports it) traced, its arguments the lanes' arrays
     (``side`` (LANES,), ``c`` (3, LANES), ``EO`` (2, LANES): the energy and step size of
     :func:`lane_jet_rough`, ``V`` (S, 5, LANES), ``Y`` (4, LANES), ``rec`` (NREC, LANES),

@@ -36,7 +36,7 @@ an edited callee never meets a stale cache entry.
 
 Everything is compiled with numpy's error model: a float divided by 0 gives inf or nan
 (the uncompiled loop, which computes on numpy's float64 scalars, does the same) instead of
-raising; the Illinois step then falls back to bisection (:func:`.roots._illinois_trial`)
+raising; the Illinois step then falls back to bisection (:func:`.roots.illinois_trial`)
 and a non-finite step is rejected.
 """
 
