@@ -37,7 +37,7 @@ import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground
 from rollingdisk.model.geometry import _geometry, _inertia
-from rollingdisk.model.state import _as_state, _reduced_state, _shape_error, state_names
+from rollingdisk.model.state import _reduced_state, _shape_error, as_state, state_names
 from rollingdisk.util.checks import real_array
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
@@ -252,7 +252,7 @@ def velocity_of_C(disk: Disk, ground: str, y):
     follows from the no-slip condition, eq. (37); on smooth ground from the inertial velocity
     ``(V_X, V_Y)`` in the state.  ``v_Cz = -omega1 y_P`` (eq. 7).
     """
-    y = _as_state(ground, y)
+    y = as_state(ground, y)
     return _velocity_of_C(ground == "rough", _check_disk(disk).h, y)
 
 
@@ -273,7 +273,7 @@ def contact_force(disk: Disk, ground: str, y):
         ``(F_x, F_y, F_z)``.  On smooth ground ``F_x = F_y = 0``; contact is maintained
         while ``F_z > 0``.
     """
-    y = _as_state(ground, y)
+    y = as_state(ground, y)
     h = _check_disk(disk).h
     rough = ground == "rough"
     F_z = _normal_force(rough, h, y)  # eq. (11)
@@ -296,7 +296,7 @@ def energy(disk: Disk, ground: str, y):
     ``y`` is a state vector or an ``(n, k)`` array of states; returns a float or an array.
     ``Z_C = -z_P`` (eq. 7), so a disk standing upright at rest (h = 0) has ``E = 1``.
     """
-    y = _as_state(ground, y)
+    y = as_state(ground, y)
     h = _check_disk(disk).h
     rough = ground == "rough"
     theta, w1, w2, w3 = _reduced_state(rough, y)
@@ -313,7 +313,7 @@ def contact_point(disk: Disk, ground: str, y):
 
     ``y`` is a state vector or an ``(n, k)`` array of states; returns floats or arrays.
     """
-    y = _as_state(ground, y)
+    y = as_state(ground, y)
     rough = ground == "rough"
     X_C, Y_C = y[0], y[1]
     psi, theta = (y[2], y[3]) if rough else (y[4], y[5])

@@ -52,7 +52,7 @@ def _shape_error(ground: str, y, name: str = "y") -> ParameterError:
                           f"({', '.join(names)}), got {np.shape(y)}")
 
 
-def _as_state(ground: str, y, name: str = "y") -> np.ndarray:
+def as_state(ground: str, y, name: str = "y") -> np.ndarray:
     """``y`` as a float array of states: right length, finite (never a silent NaN).
 
     A non-number raises :class:`~rollingdisk.util.errors.ParameterTypeError`; a wrong
@@ -65,3 +65,6 @@ def _as_state(ground: str, y, name: str = "y") -> np.ndarray:
     if not np.all(np.isfinite(y)):
         raise ParameterError(f"{name} must be finite (no NaN or infinity)")
     return y
+
+
+_as_state = as_state  # the name model.coulomb and ivp.hybrid import
