@@ -26,10 +26,7 @@ import contextlib
 import numba
 import numpy as np
 
-from rollingdisk.engine.lanes import (
-    LANES,
-    MAX_ORDER,
-)
+from rollingdisk.engine.lanes import LANES, MAX_ORDER
 from rollingdisk.engine.numba_core import (
     NS,
     A,
@@ -84,6 +81,7 @@ def threads(n: int | None = None):
 
 #: Status code -> name of the outcomes a batch kernel can end with (rollingdisk.model.outcomes).
 STATUS_NAMES = {c: outcome(c).name for c in (COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED)}
+
 
 @_jit()
 def _step4(rough, h, y, dt, K, ytmp, y_new):
