@@ -59,7 +59,7 @@ def test_creep_rhs_equals_sympy_sliding_system():
         c_roll, c_air, eps = rng.uniform(0, 0.1), rng.uniform(0, 0.1), 1e-6
         x = _random_reduced(rng, h)
         v_Cx, v_Cy, th, w1, w2, w3 = x[:6]
-        ht, s, c, p, y_P, z_P = eq._geometry(h, th)
+        ht, s, c, p, y_P, z_P = eq.contact_geometry(h, th)
         u = np.array([v_Cx - w2 + ht * w3, v_Cy - w1 * z_P])  # eq. (6)
         e = creep_factor(np.hypot(*u), u_s) * u
         # the library's moment models: AirDrag, and RollingResistance with |omega_h|
@@ -93,7 +93,7 @@ def test_boundary_layer_rhs_equals_sympy_sliding_system():
         c_roll, c_bl, eps = rng.uniform(0, 0.1), rng.uniform(0, 0.1), 1e-6
         x = _random_reduced(rng, h)
         v_Cx, v_Cy, th, w1, w2, w3 = x[:6]
-        ht, s, c, p, y_P, z_P = eq._geometry(h, th)
+        ht, s, c, p, y_P, z_P = eq.contact_geometry(h, th)
         u = np.array([v_Cx - w2 + ht * w3, v_Cy - w1 * z_P])
         e = creep_factor(np.hypot(*u), u_s) * u
         wx, wy, _ = rd.angular_velocity_xyz(th, w1, w2, w3)

@@ -35,7 +35,7 @@ from rollingdisk import (
     simulate_steady,
     stability,
 )
-from rollingdisk.model.equations import _rough_rhs, _smooth_rhs, contact_force
+from rollingdisk.model.equations import contact_force, rough_rhs, smooth_rhs
 from rollingdisk.theory.steady import steady_motion, straight_line
 from steady_numeric import steady_omega20, varpi2_numeric
 
@@ -213,7 +213,7 @@ def test_compiled_rhs_matches_the_numpy_kernels():
     rng = np.random.default_rng(7)
     for _ in range(50):
         h = rng.uniform(0, 2)
-        for rough, n, kernel in ((True, 8, _rough_rhs), (False, 10, _smooth_rhs)):
+        for rough, n, kernel in ((True, 8, rough_rhs), (False, 10, smooth_rhs)):
             y = rng.uniform(-1.5, 1.5, n)
             out = np.empty(n)
             core._rhs(rough, h, y, out)

@@ -62,7 +62,7 @@ def test_first_two_coefficients_are_the_rhs_and_its_flow_derivative(core, case):
     # y'' = (df/dy) f, by a complex step through the numpy kernels: 2 J_2 = y''
     from rollingdisk.model import equations as eq
 
-    kernel = eq._rough_rhs if ground == "rough" else eq._smooth_rhs
+    kernel = eq.rough_rhs if ground == "rough" else eq.smooth_rhs
     eps = 1e-30
     second = np.imag(np.array(kernel(h, y + 1j * eps * f0), dtype=complex)) / eps
     assert np.allclose(2.0 * J[:, 2], second, rtol=1e-11, atol=1e-11)

@@ -1,8 +1,8 @@
 """The sweeps' vector lanes (rollingdisk.engine.lanes, batch.run_batch_lanes) against
 independent truth: numpy's libm for the lanes' sin, cos, log and exp; the scalar Taylor
 kernel (held to the model's kernels by tests/test_simulate_taylor.py) for the traced jets,
-step sizes, energies and samples; the general step (batch._tay_advance) for the common
-step the lanes take without a branch (batch._tay_plain), bit for bit; closed-form roots for
+step sizes, energies and samples; the general step (batch_taylor._tay_advance) for the common
+step the lanes take without a branch (batch_taylor._tay_plain), bit for bit; closed-form roots for
 the polynomial root finder; and the scalar batch kernel for whole sweeps (equal verdicts,
 equal frequencies to 1e-12).
 """
@@ -20,13 +20,13 @@ from rollingdisk.engine import numba_core as nc  # noqa: E402
 from rollingdisk.engine.lanes import (  # noqa: E402
     LANES,
     MAX_ORDER,
-    _lane_jet_rough,
-    _lane_jet_smooth,
     _lane_math,
-    _lane_plain,
-    _lane_samples,
+    lane_jet_rough,
+    lane_jet_smooth,
+    lane_plain,
+    lane_samples,
 )
-from rollingdisk.sweep import batch, executors  # noqa: E402
+from rollingdisk.sweep import batch, batch_taylor, executors  # noqa: E402
 from rollingdisk.sweep.grid import Perturbation, SweepGrid, _Spec  # noqa: E402
 
 W = LANES
@@ -98,12 +98,12 @@ def test_lane_log_and_exp_at_the_ends_of_their_ranges():
 @numba.njit
 def _jet(rough, hv, k1v, k2v, Y, J, A, EO, dt, V, P):
     if rough:
-        _lane_jet_rough(P, hv, k1v, k2v, 1e-9, 1e-9, Y, J, A, EO)
+        lane_jet_rough(P, hv, k1v, k2v, 1e-9, 1e-9, Y, J, A, EO)
     else:
-        _lane_jet_smooth(P, hv, k1v, k2v, 1e-9, 1e-9, Y, J, A, EO)
+        lane_jet_smooth(P, hv, k1v, k2v, 1e-9, 1e-9, Y, J, A, EO)
     for i in range(dt.shape[0]):
         dt[i] = EO[1, i]
-    _lane_samples(P, 2, hv, J, A, dt, V)
+    lane_samples(P, 2, hv, J, A, dt, V)
 
 
 @numba.njit
@@ -165,21 +165,21 @@ def test_traced_jet_step_size_energy_and_samples_are_the_scalar_kernels(rough, P
 @numba.njit
 def _steps(rough, h, k1, k2, side, c, E, dt, V, Y, rec, Yb, recb, P, J, A, t_end, max_steps,
            grow_lo, grow_hi, okv, stv):
-    """Lane by lane: the common step (batch._tay_plain) on (Y, rec) and the general one
-    (batch._tay_advance) on copies (Yb, recb), from the same jets."""
+    """Lane by lane: the common step (batch_taylor._tay_plain) on (Y, rec) and the general one
+    (batch_taylor._tay_advance) on copies (Yb, recb), from the same jets."""
     N = np.zeros(P + 1)
     v = np.empty(5)
     for ln in range(Y.shape[1]):
-        okv[ln] = batch._tay_plain(t_end, max_steps, grow_lo, grow_hi, side[ln], c[:, ln],
+        okv[ln] = batch_taylor._tay_plain(t_end, max_steps, grow_lo, grow_hi, side[ln], c[:, ln],
                                    E[ln], dt[ln], V[:, :, ln], Y[:, ln], rec[:, ln])
-        stv[ln] = batch._tay_advance(rough, h[ln], k1[ln], k2[ln], side[ln], c[1, ln],
+        stv[ln] = batch_taylor._tay_advance(rough, h[ln], k1[ln], k2[ln], side[ln], c[1, ln],
                                      c[2, ln], grow_lo, grow_hi, t_end, max_steps, P, J, A,
                                      N, E[ln], dt[ln], V, v, Yb, recb, ln)
 
 
 @numba.njit
 def _plain_lanes(t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec, ok):
-    _lane_plain(batch._tay_plain, t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y,
+    lane_plain(batch_taylor._tay_plain, t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y,
                 rec, ok)
 
 
@@ -196,24 +196,24 @@ def _step_cases(seed, P=12):
     J, A, EO, V = _lane_buffers(P)
     _jet_p(True, h * side, k1, k2, Y, J, A, EO, EO[1].copy(), V, P)
     t_end = 10.0
-    rec = np.zeros((batch._NREC, W))
+    rec = np.zeros((batch_taylor._NREC, W))
     # theta_ref: the sampled theta's neighbourhood (crossings both ways) or far away
     thr = Y[0] + rng.choice([0.0, 0.0, 1.0], W) * rng.uniform(-1.5, 1.5, W) * np.abs(
         V[1, 0] - Y[0])
     a0 = 10.0 ** rng.uniform(-5.0, -1.0, W)  # the levels 10 a0, 100 a0 passed or not
     c = np.array([h, thr, a0])
-    rec[batch._R_T] = np.choose(rng.integers(0, 4, W), [0.0, 3.0, 3.0, t_end - 0.5 * EO[1]])
-    rec[batch._R_NSTEPS] = rng.choice([0.0, 4.0, 4.0, 4.0, 4.0, 99.0], W)
-    rec[batch._R_MAXD] = rng.uniform(0.0, 0.1, W)
-    rec[batch._R_TLO] = rng.choice([np.nan, 1.0, 1.0], W)
-    rec[batch._R_THI] = rng.choice([np.nan, 2.0, 2.0], W)
+    rec[batch_taylor._R_T] = np.choose(rng.integers(0, 4, W), [0.0, 3.0, 3.0, t_end - 0.5 * EO[1]])
+    rec[batch_taylor._R_NSTEPS] = rng.choice([0.0, 4.0, 4.0, 4.0, 4.0, 99.0], W)
+    rec[batch_taylor._R_MAXD] = rng.uniform(0.0, 0.1, W)
+    rec[batch_taylor._R_TLO] = rng.choice([np.nan, 1.0, 1.0], W)
+    rec[batch_taylor._R_THI] = rng.choice([np.nan, 2.0, 2.0], W)
     # as in a run: a level the start of the step is already past was timed before it
     d0 = np.abs(Y[0] - thr)
-    rec[batch._R_TLO, d0 > _GROW[0] * a0] = 1.0
-    rec[batch._R_THI, d0 > _GROW[1] * a0] = 2.0
-    rec[batch._R_EDRIFT] = rng.choice([0.0, 1e-9], W)
-    rec[batch._R_E0] = EO[0] * (1.0 + rng.uniform(-1e-8, 1e-8, W))
-    rec[batch._R_NA] = 1.0
+    rec[batch_taylor._R_TLO, d0 > _GROW[0] * a0] = 1.0
+    rec[batch_taylor._R_THI, d0 > _GROW[1] * a0] = 2.0
+    rec[batch_taylor._R_EDRIFT] = rng.choice([0.0, 1e-9], W)
+    rec[batch_taylor._R_E0] = EO[0] * (1.0 + rng.uniform(-1e-8, 1e-8, W))
+    rec[batch_taylor._R_NA] = 1.0
     return h, k1, k2, side, c, EO, V, Y, rec, J, A, t_end
 
 
@@ -237,11 +237,12 @@ def test_the_common_step_is_the_general_steps_result(seed):
         else:
             np.testing.assert_array_equal(reca[:, ln], rec[:, ln])
             np.testing.assert_array_equal(Ya[:, ln], Y[:, ln])
-            changed = not np.array_equal(recb[batch._R_CR:, ln], rec[batch._R_CR:, ln])
-            timed = (np.isnan(rec[[batch._R_TLO, batch._R_THI], ln])
-                     != np.isnan(recb[[batch._R_TLO, batch._R_THI], ln])).any()
-            first = rec[batch._R_NSTEPS, ln] == 0
-            last = rec[batch._R_T, ln] + EO[1, ln] >= t_end
+            cr = batch_taylor._R_CR
+            changed = not np.array_equal(recb[cr:, ln], rec[cr:, ln])
+            timed = (np.isnan(rec[[batch_taylor._R_TLO, batch_taylor._R_THI], ln])
+                     != np.isnan(recb[[batch_taylor._R_TLO, batch_taylor._R_THI], ln])).any()
+            first = rec[batch_taylor._R_NSTEPS, ln] == 0
+            last = rec[batch_taylor._R_T, ln] + EO[1, ln] >= t_end
             assert st[ln] != 0 or changed or timed or first or last
     Yt, rect, okt = Y.copy(), rec.copy(), np.zeros(W)
     _plain_lanes(t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Yt, rect, okt)

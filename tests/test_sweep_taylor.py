@@ -37,7 +37,7 @@ def _jet4(nc, ground, h, x, P):
 
 
 def _rhs(ground, h):
-    return lambda t, x: np.array(eq._reduced_rhs(ground == "rough", h, x), dtype=complex
+    return lambda t, x: np.array(eq.reduced_rhs(ground == "rough", h, x), dtype=complex
                                  if np.iscomplexobj(x) else float)
 
 
@@ -54,11 +54,11 @@ def test_reduced_jet_starts_with_the_rhs_and_its_flow_derivative(nc, case):
     ground, h, th, sign, w1, w2, w3 = case
     x = np.array([sign * th, w1, w2, w3])
     J, _ = _jet4(nc, ground, h, x, 12)
-    f0 = np.array(eq._reduced_rhs(ground == "rough", h, x))
+    f0 = np.array(eq.reduced_rhs(ground == "rough", h, x))
     assert np.allclose(J[:, 0], x, rtol=0, atol=0)
     assert np.allclose(J[:, 1], f0, rtol=1e-13, atol=1e-13)
     eps = 1e-30
-    second = np.imag(np.array(eq._reduced_rhs(ground == "rough", h, x + 1j * eps * f0),
+    second = np.imag(np.array(eq.reduced_rhs(ground == "rough", h, x + 1j * eps * f0),
                               dtype=complex)) / eps
     assert np.allclose(2.0 * J[:, 2], second, rtol=1e-11, atol=1e-11)
 
@@ -98,7 +98,7 @@ def test_reduced_series_and_normal_force_agree_with_solve_ivp(nc, case):
         assert np.allclose(out, ref, rtol=1e-10, atol=1e-10)
         nc._tay_sample(h, J, A, P, xs, v)
         assert np.allclose(v[:4], ref, rtol=1e-10, atol=1e-10)
-        fz = eq._normal_force(ground == "rough", h, ref)  # eq. (11) on the true state
+        fz = eq.normal_force(ground == "rough", h, ref)  # eq. (11) on the true state
         assert math.isclose(v[4], fz, rel_tol=1e-9, abs_tol=1e-9)
         assert math.isclose(nc._tay_poly(N, P - 1, xs), fz, rel_tol=1e-9, abs_tol=1e-9)
 

@@ -35,7 +35,7 @@ def main(argv=None) -> int:
 
     With ``argv`` None (the console script, ``python -m rollingdisk``: this process is the
     command) the signals stay covered to the last instant: once the command is done a
-    Ctrl-C or SIGTERM is only recorded (the interpreter's shutdown takes ~0.15 s), and
+    Ctrl-C or SIGTERM is only recorded (the interpreter's shutdown takes a moment), and
     :func:`_last_word`, after every other exit handler, ignores both from then on and
     reports a recorded one as one line with exit status 130 / 143, instead of the
     process dying silently (at shutdown Python gives its signals back their default

@@ -113,8 +113,8 @@ def configure(sub):
                    "riding along (fewer steps for the same energy drift)")
     p.add_argument("--max-steps", dest="max_steps", type=positive_int, default=None,
                    help="step budget: stop with status step-budget after this many steps "
-                   "(default 2000000 on the ideal grounds, about 20 s compiled; 200000 on "
-                   "coulomb ground, whose Python-stepped integrator takes about 1 ms a step)")
+                   "(default 2000000 on the ideal grounds; 200000 on coulomb ground, whose "
+                   "steps cost more)")
     p.add_argument("--max-wall-time", dest="max_wall_time",
                    type=real("max_wall_time", low=0.0, high=86400.0, low_open=True),
                    default=60.0, help="coulomb ground: wall-clock budget in seconds (default "

@@ -40,14 +40,15 @@ from rollingdisk.engine.roots import (
     _illinois_update,
 )
 from rollingdisk.model import events as _ev
-from rollingdisk.model.equations import (
-    _normal_force,
-    _reduced_rhs,
-    _rough_rhs,
-    _side_normal_force,
-    _smooth_rhs,
-)
-from rollingdisk.model.state import _reduced_state
+
+# the model's kernels, under the names by which this module's functions call them and the
+# compiled namespaces (numba_core, pycore) bind their compiled versions
+from rollingdisk.model.equations import normal_force as _normal_force
+from rollingdisk.model.equations import reduced_rhs as _reduced_rhs
+from rollingdisk.model.equations import rough_rhs as _rough_rhs
+from rollingdisk.model.equations import side_normal_force as _side_normal_force
+from rollingdisk.model.equations import smooth_rhs as _smooth_rhs
+from rollingdisk.model.state import reduced_state as _reduced_state
 
 # ------------------------------------------------------------------ DOP853 coefficients
 _NS = _dop.N_STAGES  # 12

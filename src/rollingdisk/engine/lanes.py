@@ -2,9 +2,9 @@
 sampler, the energy and the common step, ``LANES`` trajectories per machine instruction.
 
 Nothing here is a second copy of a formula.  The scalar sources of
-:mod:`rollingdisk.engine.taylor` (``_tay_jet4_rough``, ``_tay_jet4_smooth``,
+:mod:`rollingdisk.engine.taylor_jets` (``_tay_jet4_rough``, ``_tay_jet4_smooth``,
 ``_tay_step_size``, ``_tay_sample``), ``_energy_sc`` and the common step
-:func:`rollingdisk.sweep.batch._tay_plain` are *traced*: each is run once, at compile
+:func:`rollingdisk.sweep.batch_taylor._tay_plain` are *traced*: each is run once, at compile
 time, on values of :class:`_Vec` instead of floats, and every arithmetic operation it
 performs emits the same operation on an LLVM vector ``<LANES x double>`` (one trajectory per
 lane).  The loops over the orders run in Python during the trace, so the code is unrolled for
@@ -92,7 +92,7 @@ class _Mask:
         self.m = m
 
     def __bool__(self):
-        raise TypeError("a branch on a vector comparison cannot be traced: use _where")
+        raise TypeError("a branch on a vector comparison cannot be traced: use where")
 
 
 class _Vec:
@@ -168,7 +168,7 @@ def _select(m: _Mask, a, b) -> _Vec:
 
 
 def _where(c, a, b):
-    """``a if c else b`` lane by lane (``taylor._where``)."""
+    """``a if c else b`` lane by lane (``taylor_jets.where``)."""
     if isinstance(c, _Mask):
         return _select(c, a, b)
     return a if c else b
@@ -404,17 +404,17 @@ class _VecNumpy:
 
 
 def _traced(names: tuple[str, ...], glb: dict | None = None) -> dict:
-    """The scalar sources ``names`` in the module namespace ``glb`` (:mod:`.taylor`'s by
+    """The scalar sources ``names`` in the module namespace ``glb`` (:mod:`.taylor_jets`'s by
     default; a numba function stands for its Python source) re-bound to a namespace in
-    which ``math``, ``np``, ``max``, ``min`` and the helpers ``_where``, ``_signed_h`` are
+    which ``math``, ``np``, ``max``, ``min`` and the helpers ``where``, ``_signed_h`` are
     the trace's."""
     if glb is None:
-        from rollingdisk.engine import taylor
+        from rollingdisk.engine import taylor_jets
 
-        glb = taylor.__dict__
+        glb = taylor_jets.__dict__
     src = dict(glb)
     ns = dict(src)
-    ns.update(math=_VecMath, np=_VecNumpy, max=_max, min=_min, _where=_where,
+    ns.update(math=_VecMath, np=_VecNumpy, max=_max, min=_min, where=_where,
               _signed_h=lambda h, th0: h)
     for name in names:
         f = getattr(src[name], "py_func", src[name])
@@ -469,7 +469,7 @@ def _lane_jet_intrinsic(rough: bool):
 
         return sig, codegen
 
-    typer.__name__ = f"_lane_jet_{'rough' if rough else 'smooth'}"
+    typer.__name__ = f"lane_jet_{'rough' if rough else 'smooth'}"
     return intrinsic(typer)
 
 
@@ -481,12 +481,12 @@ def _splat_value(builder, x) -> _Vec:
     return _Vec(v)
 
 
-_lane_jet_rough = _lane_jet_intrinsic(True)
-_lane_jet_smooth = _lane_jet_intrinsic(False)
+lane_jet_rough = _lane_jet_intrinsic(True)
+lane_jet_smooth = _lane_jet_intrinsic(False)
 
 
 @intrinsic
-def _lane_samples(typingctx, P, S, h, J, A, dt, V):
+def lane_samples(typingctx, P, S, h, J, A, dt, V):
     """``V[m - 1, :, lane]`` = ``(theta, omega1, omega2, omega3, F_z)`` at ``dt m / S`` into
     the step (m = 1..S; ``_tay_sample`` and the sample points of ``_one_taylor``)."""
     if not isinstance(P, types.IntegerLiteral) or not isinstance(S, types.IntegerLiteral):
@@ -517,13 +517,13 @@ def _lane_samples(typingctx, P, S, h, J, A, dt, V):
 
 
 @intrinsic
-def _lane_plain(typingctx, step, t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec,
+def lane_plain(typingctx, step, t_end, max_steps, grow_lo, grow_hi, side, c, EO, V, Y, rec,
                 ok):
     """The common step in every lane at once: ``step``
-    (:func:`rollingdisk.sweep.batch._tay_plain`, handed in by its caller so that this
+    (:func:`rollingdisk.sweep.batch_taylor._tay_plain`, handed in by its caller so that this
     module need not import the one that imports it) traced, its arguments the lanes' arrays
     (``side`` (LANES,), ``c`` (3, LANES), ``EO`` (2, LANES): the energy and step size of
-    :func:`_lane_jet_rough`, ``V`` (S, 5, LANES), ``Y`` (4, LANES), ``rec`` (NREC, LANES),
+    :func:`lane_jet_rough`, ``V`` (S, 5, LANES), ``Y`` (4, LANES), ``rec`` (NREC, LANES),
     S and NREC the constants ``_SAMPLES`` and ``_NREC`` of ``step``'s module); ``ok[lane]``
     = its result: 1.0 where the lane took the step, 0.0 where the lane is left as it was,
     for the scalar step."""

@@ -7,10 +7,10 @@ in which the functions it calls are the compiled versions, then handed to
 ``numba.njit(cache=True)``; the compiled code is cached on disk (see
 :mod:`rollingdisk.engine.jit` for how a cold cache is filled without making a user wait).
 
-The names and signatures of the building blocks (``_rhs``, ``_step``, ``_error_norm``,
-``initial_step``, ``_guards``, ``_dense_coefficients``, ``_dense_value`` and the constants
-``_NS``, ``_NSX``, ``_SAFETY``, ``_MIN_FACTOR``, ``_MAX_FACTOR``, ``_ERR_EXP``) are relied
-on by batch drivers: keep them.
+The compiled functions keep the names of their sources, by which they call each other.
+The sweeps' batch kernels (:mod:`rollingdisk.sweep.batch` and its parts) are compiled
+against the building blocks listed under "the building blocks of the batch kernels" below,
+by public names: keep their names and signatures.
 """
 
 from __future__ import annotations
@@ -24,10 +24,11 @@ import rollingdisk.engine as _engine_pkg
 import rollingdisk.model as _model_pkg
 from rollingdisk.engine import dop853 as _src
 from rollingdisk.engine import taylor as _tay
+from rollingdisk.engine import taylor_jets as _jets
 from rollingdisk.engine.compile import source_key as _source_key
 from rollingdisk.model import equations as _eq
 
-_ns = {**_eq.__dict__, **_src.__dict__, **_tay.__dict__}
+_ns = {**_eq.__dict__, **_src.__dict__, **_jets.__dict__, **_tay.__dict__}
 
 #: The kernels of equations.py, then the integrator of _dop853.py, every one compiled.
 _KERNELS = ("_inertia", "_geometry", "_rough_omega_dot", "_smooth_omega_dot", "_rough_rhs",
@@ -39,9 +40,10 @@ _INTEGRATOR = ("_illinois_converged", "_illinois_trial", "_illinois_update", "_r
                "initial_step_v", "_initial_step_scaled", "_side_guards", "_first_fired",
                "_guard_root", "_locate_on_dense", "_needs_sampling", "_mid_guards", "_grow",
                "integrate")
-#: The Taylor integrator of _taylor.py (``simulate(method="taylor")``) and the reduced jets,
-#: sampler and root finder of the sweeps' batch Taylor kernel (:mod:`.batch`).
-_TAYLOR = ("_signed_h", "_where", "_tay_jet_rough", "_tay_rows_rough", "_tay_rows_smooth",
+#: The jets of taylor_jets.py (the reduced jets, sampler and root finder of the sweeps' batch
+#: Taylor kernels among them) and the Taylor integrator of taylor.py
+#: (``simulate(method="taylor")``).
+_TAYLOR = ("_signed_h", "where", "_tay_jet_rough", "_tay_rows_rough", "_tay_rows_smooth",
            "_tay_quadratures_smooth", "_tay_jet", "_tay_jet4_rough", "_tay_jet4_smooth",
            "_energy_sc", "_tay_normal", "_tay_sample", "_tay_poly", "_tay_poly_d", "_tay_poly_root",
            "_tay_eval",
@@ -50,13 +52,13 @@ _DISPATCHERS = _KERNELS + _INTEGRATOR + _TAYLOR
 #: The Taylor jet and its Horner evaluation: multiply-adds fused (``contract``: one rounding
 #: instead of two, the order of every sum kept, no reassociation) and numpy's error model
 #: (a quotient by cos theta = 0 gives inf, which fails the step size, instead of a branch
-#: raising ZeroDivisionError on every division): the jet 0.97 -> 0.71 ms per 1860 calls.
+#: raising ZeroDivisionError on every division).
 _CONTRACT = ("_tay_jet_rough", "_tay_rows_rough", "_tay_rows_smooth",
              "_tay_quadratures_smooth", "_tay_jet", "_tay_jet4_rough", "_tay_jet4_smooth",
              "_tay_normal", "_tay_sample", "_tay_poly", "_tay_poly_d", "_tay_eval",
              "_tay_eval_reduced")
 #: numpy's error model without ``contract``: the step size takes the logarithm of a
-#: quotient by a norm that may be 0 (giving inf, which ``_where`` then discards), the
+#: quotient by a norm that may be 0 (giving inf, which ``where`` then discards), the
 #: root finder's Newton step divides by a derivative that may be 0 (a step out of the
 #: bracket, which bisects instead).
 _NUMPY_ERRORS = ("_tay_step_size", "_tay_poly_root")
@@ -95,6 +97,26 @@ _SAFETY, _MIN_FACTOR, _MAX_FACTOR, _ERR_EXP = (_src._SAFETY, _src._MIN_FACTOR,
 RUNNING, COMPLETED, LIFT_OFF, EDGE_CONTACT, FELL_FLAT, FAILED, STEP_BUDGET = (
     _src.RUNNING, _src.COMPLETED, _src.LIFT_OFF, _src.EDGE_CONTACT, _src.FELL_FLAT,
     _src.FAILED, _src.STEP_BUDGET)
+
+# ---------------------------------------------- the building blocks of the batch kernels
+#: Hash of the sources the compiled functions may call (:func:`.compile.source_key`): a
+#: batch kernel compiled against them carries it in its name.
+SOURCE_KEY = _KEY
+#: DOP853's stages and their weights (:mod:`.dop853`).
+NS, A, B = _NS, _A, _B
+#: DOP853 on the disk: the right-hand side on a 4- to 10-component state, its reduced form
+#: returning a tuple, the error norm and the step-size factor of scipy's control, the
+#: guards, and eq. (4).
+rhs, reduced_rhs, error_norm, step_factor, guards, geometry = (
+    _ns["_rhs"], _ns["_reduced_rhs"], _ns["_error_norm"], _ns["_step_factor"],
+    _ns["_guards"], _ns["_geometry"])
+#: The Taylor method on the reduced disk (:mod:`.taylor_jets`): the jets, their step
+#: size, the samples and the normal force along a step, a root of its polynomial, the
+#: energy, and the traceable choice.
+tay_jet4_rough, tay_jet4_smooth, tay_step_size, tay_sample, tay_normal, tay_poly_root = (
+    _ns["_tay_jet4_rough"], _ns["_tay_jet4_smooth"], _ns["_tay_step_size"],
+    _ns["_tay_sample"], _ns["_tay_normal"], _ns["_tay_poly_root"])
+energy_sc, where = _ns["_energy_sc"], _ns["where"]
 
 
 # ------------------------------------------------------------------ stale-cache guard

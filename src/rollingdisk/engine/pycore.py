@@ -5,7 +5,7 @@ The very functions of :mod:`rollingdisk.engine.dop853` and the kernels of
 compiling them) to a namespace in which
 
 * ``np`` is :data:`_SCALAR_NP`: scalar maths from :mod:`math` (``np.sin`` of a float costs
-  about 1 us, ``math.sin`` 50 ns), everything else numpy's;
+  many times ``math.sin``), everything else numpy's;
 * the loops over state components that numba compiles well and CPython runs slowly are
   numpy one-liners doing the same sums: :func:`_combine`, :func:`_dense_tail`,
   :func:`_error_norm_v`, :func:`_dense_value`, :func:`_rms`, and ``_rhs`` hands the

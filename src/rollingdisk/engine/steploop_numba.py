@@ -1,35 +1,29 @@
 """The step loop of :mod:`rollingdisk.engine.steploop`, compiled once for every model.
 
-How a model's functions reach compiled code -- the choice and why (numba 0.68, measured on
-this machine with a toy loop, ``NUMBA_CACHE_DIR`` in a fresh folder, two processes each):
+How a model's functions reach compiled code -- the choice and why (numba 0.68, tried with a
+toy loop, ``NUMBA_CACHE_DIR`` in a fresh folder, two processes each):
 
 * **numba dispatchers passed as arguments** (the loop typed on each function's
   ``Dispatcher`` type): one specialization of the loop per model, and ``cache=True`` never
   hits -- the type is the dispatcher object, which differs in every process, so each
-  process compiled the loop again (11-13 s) and added entries to the cache.  Rejected.
+  process compiled the loop again and added entries to the cache.  Rejected.
 * **closures from a factory** (``make_loop(rhs)`` returning an ``njit`` function that
   calls ``rhs``): the cache key holds the pickled closure cells, which differ in every
-  process: a miss every time (1 s each for the toy loop).  Rejected.
+  process: a miss every time.  Rejected.
 * **first-class function types** (``numba.types.FunctionType``): the loop is compiled with
   an explicit signature in which ``rhs``, ``events`` and ``impact`` are typed by their
   signatures alone; the model's functions are compiled with those signatures, each in its
   own cache, and called through a function pointer.  One compiled loop serves every model
-  and it loads from the cache: the toy loop took 5.4 s to compile, 0.31 s to load in the
-  next process.  The indirect call costs about 6 ns per call (toy: 16 ns per step against
-  10 ns specialized) and numba cannot inline the model's function into the loop; a
-  DOP853 step makes 12-16 calls into a right-hand side that costs far more than that.
+  and it loads from the cache in the next process.  The indirect call costs a few
+  nanoseconds and numba cannot inline the model's function into the loop; a DOP853 step
+  makes 12-16 calls into a right-hand side that costs far more than that.
   Chosen.  numba documents first-class functions as experimental; the tests of
   ``tests/test_engine_contract.py`` run every model both ways and compare.
 
-The real loop, measured the same way (load average about 1 on 2 cores): compiling it with an
-empty cache took 13 s (58 s with the machine shared at a load average of 10); in a fresh
-process ``import numba`` took 0.25-0.4 s, loading the loop from the cache 0.28-0.31 s and a
-model's three functions 0.01 s.  A step cost 0.9 us on a one-component model without
-events (14 right-hand sides) and 3.5 us on the pendulum of the tests, with two events
-sampled in every step and about one located per step.  On the disk on rough ground (8
-components, no guards, h = 0.17, 17311 steps) it took 2.53 us a step against 2.51 us for
-:func:`rollingdisk.engine.numba_core.integrate`, whose steps it reproduced to the last bit,
-compiled and uncompiled.
+On the disk on rough ground the loop takes the steps of
+:func:`rollingdisk.engine.numba_core.integrate` to the last bit, compiled and uncompiled
+(``tests/test_engine_contract.py``); its compile, load and step times are measured in
+``benchmarks/`` (docs/performance.md).
 
 The loop and its helpers are the plain functions of :mod:`rollingdisk.engine.steploop`,
 :mod:`rollingdisk.engine.dop853` and :mod:`rollingdisk.engine.roots`, made callable from
@@ -42,7 +36,7 @@ an edited callee never meets a stale cache entry.
 
 Everything is compiled with numpy's error model: a float divided by 0 gives inf or nan
 (the uncompiled loop, which computes on numpy's float64 scalars, does the same) instead of
-raising; the Illinois step then falls back to bisection (:func:`.roots._illinois_trial`)
+raising; the Illinois step then falls back to bisection (:func:`.roots.illinois_trial`)
 and a non-finite step is rejected.
 """
 

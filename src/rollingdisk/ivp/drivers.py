@@ -26,9 +26,9 @@ import numpy as np
 from rollingdisk.engine import jit as _jit
 from rollingdisk.engine.roots import (
     ILLINOIS_MAXITER,
-    _illinois_converged,
-    _illinois_trial,
-    _illinois_update,
+    illinois_converged,
+    illinois_trial,
+    illinois_update,
 )
 from rollingdisk.model import events as _ev
 from rollingdisk.model.equations import equations_of_motion
@@ -253,10 +253,10 @@ def _root(fun, a, b, fa):
     fb = fun(b)
     flag = 0
     for _ in range(ILLINOIS_MAXITER):
-        if _illinois_converged(a, b):
+        if illinois_converged(a, b):
             break
-        c = _illinois_trial(a, b, fa, fb)
-        a, b, fa, fb, flag = _illinois_update(a, b, fa, fb, c, fun(c), flag)
+        c = illinois_trial(a, b, fa, fb)
+        a, b, fa, fb, flag = illinois_update(a, b, fa, fb, c, fun(c), flag)
     return a
 
 

@@ -29,7 +29,7 @@ import numpy as np
 from rollingdisk.engine.methods import check_method
 from rollingdisk.model import events as _ev
 from rollingdisk.model.disk import Disk, check_ground
-from rollingdisk.model.equations import _check_disk, energy, equations_of_motion
+from rollingdisk.model.equations import check_disk, energy, equations_of_motion
 from rollingdisk.model.state import state_index, state_names
 from rollingdisk.results.trajectory import Trajectory
 from rollingdisk.util.checks import check_real, check_span, real_array
@@ -285,7 +285,7 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
     >>> tr.status, bool(energy_drift(tr) < 1e-9)
     ('completed', True)
     """
-    _check_disk(disk)
+    check_disk(disk)
     ground = check_ground(ground)
     y = _check_state(disk, ground, y0)
     t0, t1 = check_span(t_span)

@@ -37,7 +37,7 @@ import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground
 from rollingdisk.model.geometry import _geometry, _inertia
-from rollingdisk.model.state import _as_state, _reduced_state, _shape_error, state_names
+from rollingdisk.model.state import _reduced_state, _shape_error, as_state, state_names
 from rollingdisk.util.checks import real_array
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
@@ -46,7 +46,7 @@ __all__ = ["equations_of_motion", "omega_dot", "contact_force", "energy", "conta
 
 
 
-def _rough_omega_dot(h, theta, w1, w2, w3):
+def rough_omega_dot(h, theta, w1, w2, w3):
     """Angular accelerations on rough ground, eq. (38) (confirmed by the derivation)."""
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
     h2 = h * h
@@ -58,7 +58,7 @@ def _rough_omega_dot(h, theta, w1, w2, w3):
     return d1, d2, d3
 
 
-def _smooth_omega_dot(h, theta, w1, w2, w3):
+def smooth_omega_dot(h, theta, w1, w2, w3):
     """Angular accelerations on smooth ground, eq. (49) (confirmed by the derivation)."""
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
     k1 = _inertia(h)[0]  # eq. (10)
@@ -69,7 +69,7 @@ def _smooth_omega_dot(h, theta, w1, w2, w3):
     return d1, d2, d3
 
 
-def _rough_rhs(h, y):
+def rough_rhs(h, y):
     """Right-hand side on rough ground: eqs. (1), (2), (37), (38)."""
     X_C, Y_C, psi, theta, phi, w1, w2, w3 = y
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
@@ -86,7 +86,7 @@ def _rough_rhs(h, y):
             d1, d2, d3)
 
 
-def _smooth_rhs(h, y):
+def smooth_rhs(h, y):
     """Right-hand side on smooth ground: eqs. (2), (8) with F_x = F_y = 0, (49)."""
     X_C, Y_C, V_X, V_Y, psi, theta, phi, w1, w2, w3 = y
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
@@ -95,7 +95,7 @@ def _smooth_rhs(h, y):
     return (V_X, V_Y, zero, zero, w3 / c, w1, w2 - w3 * p, d1, d2, d3)
 
 
-def _reduced_rhs(rough, h, x):
+def reduced_rhs(rough, h, x):
     """Right-hand side of the reduced system ``x = (theta, omega1, omega2, omega3)``:
     ``d theta/dt = omega1`` (eq. 2) and eq. (38) on rough / (49) on smooth ground.
 
@@ -109,7 +109,7 @@ def _reduced_rhs(rough, h, x):
     return w1, d1, d2, d3
 
 
-def _normal_force(rough, h, y):
+def normal_force(rough, h, y):
     """Normal force ``F_z = 1 + z_P omega1^2 - y_P d omega1/dt``, eq. (11)."""
     theta, w1, w2, w3 = _reduced_state(rough, y)
     ht, s, c, p, y_P, z_P = _geometry(h, theta)
@@ -120,7 +120,7 @@ def _normal_force(rough, h, y):
     return 1.0 + z_P * w1 * w1 - y_P * d1  # eq. (11)
 
 
-def _side_normal_force(rough, h, y, side):
+def side_normal_force(rough, h, y, side):
     """``F_z`` of eq. (11) with ``h~ = h side`` whatever the sign of ``theta``.
 
     The normal force of the motion on the side ``side = sgn(theta)`` it started on,
@@ -148,14 +148,27 @@ def _velocity_of_C(rough, h, y):
     return v_Cx, v_Cy, -w1 * y_P  # eq. (7)
 
 
+#: The kernels under the names by which they call each other and by which the compiled
+#: namespaces (:mod:`rollingdisk.engine.numba_core`, :mod:`rollingdisk.engine.pycore`)
+#: bind their compiled versions.
+_rough_omega_dot, _smooth_omega_dot = rough_omega_dot, smooth_omega_dot
+_rough_rhs, _smooth_rhs, _reduced_rhs = rough_rhs, smooth_rhs, reduced_rhs
+_normal_force, _side_normal_force = normal_force, side_normal_force
+
+
 # ---------------------------------------------------------------------------------------
 # public API
 # ---------------------------------------------------------------------------------------
-def _check_disk(disk) -> Disk:
+def check_disk(disk) -> Disk:
+    """``disk`` if it is a :class:`~rollingdisk.model.disk.Disk`, else
+    :class:`~rollingdisk.util.errors.ParameterTypeError` naming it."""
     if not isinstance(disk, Disk):
         raise ParameterTypeError(f"disk must be a rollingdisk.Disk, got {type(disk).__name__}"
                                  f" {disk!r}")
     return disk
+
+
+_check_disk = check_disk  # the name model.coulomb, ivp.hybrid and phases.impact import
 
 
 def equations_of_motion(disk: Disk, ground: str) -> Callable[[float, np.ndarray], np.ndarray]:
@@ -239,7 +252,7 @@ def velocity_of_C(disk: Disk, ground: str, y):
     follows from the no-slip condition, eq. (37); on smooth ground from the inertial velocity
     ``(V_X, V_Y)`` in the state.  ``v_Cz = -omega1 y_P`` (eq. 7).
     """
-    y = _as_state(ground, y)
+    y = as_state(ground, y)
     return _velocity_of_C(ground == "rough", _check_disk(disk).h, y)
 
 
@@ -260,7 +273,7 @@ def contact_force(disk: Disk, ground: str, y):
         ``(F_x, F_y, F_z)``.  On smooth ground ``F_x = F_y = 0``; contact is maintained
         while ``F_z > 0``.
     """
-    y = _as_state(ground, y)
+    y = as_state(ground, y)
     h = _check_disk(disk).h
     rough = ground == "rough"
     F_z = _normal_force(rough, h, y)  # eq. (11)
@@ -283,7 +296,7 @@ def energy(disk: Disk, ground: str, y):
     ``y`` is a state vector or an ``(n, k)`` array of states; returns a float or an array.
     ``Z_C = -z_P`` (eq. 7), so a disk standing upright at rest (h = 0) has ``E = 1``.
     """
-    y = _as_state(ground, y)
+    y = as_state(ground, y)
     h = _check_disk(disk).h
     rough = ground == "rough"
     theta, w1, w2, w3 = _reduced_state(rough, y)
@@ -300,7 +313,7 @@ def contact_point(disk: Disk, ground: str, y):
 
     ``y`` is a state vector or an ``(n, k)`` array of states; returns floats or arrays.
     """
-    y = _as_state(ground, y)
+    y = as_state(ground, y)
     rough = ground == "rough"
     X_C, Y_C = y[0], y[1]
     psi, theta = (y[2], y[3]) if rough else (y[4], y[5])

@@ -25,14 +25,14 @@ def h_tilde(h, theta):
     float or ndarray
         ``+h`` for ``theta >= 0`` (``theta = 0`` counts as the limit ``0+``), ``-h`` for
         ``theta < 0``: the convention of the kernels, defined once in
-        :func:`_geometry` below.
+        :func:`contact_geometry` below.
 
     Examples
     --------
     >>> h_tilde(0.2, -0.5), h_tilde(0.2, 0.0)
     (-0.2, 0.2)
     """
-    ht = _geometry(real_array("h", h), real_array("theta", theta))[0]
+    ht = contact_geometry(real_array("h", h), real_array("theta", theta))[0]
     return float(ht) if np.ndim(ht) == 0 else ht
 
 
@@ -40,28 +40,23 @@ def h_tilde(h, theta):
 # ---------------------------------------------------------------------------------------
 # kernels: plain arithmetic, numba-compilable, element-wise on arrays
 # ---------------------------------------------------------------------------------------
-def _inertia(h):
-    """``(k1^2, k2^2)``: the squared radii of gyration of the disk about a diameter through C
-    and about its axis, in units of ``a^2`` (eq. 10): ``k1^2 = 1/4 + h^2/3``, ``k2^2 = 1/2``.
+def inertia(h):
+    """``(k1^2, k2^2)``: the squared radii of gyration of a disk of half-thickness ``h`` about
+    a diameter through C and about its axis, in units of ``a^2`` (eq. 10): ``k1^2 = 1/4 +
+    h^2/3``, ``k2^2 = 1/2``.
 
     The library's one place for eq. (10): every kernel, map and property takes it from here.
     Element-wise on arrays; numba-compilable.
-    """
-    return 0.25 + h * h / 3.0, 0.5
-
-
-def inertia(h):
-    """``(k1^2, k2^2)`` of a disk of half-thickness ``h`` (eq. 10; units of ``a^2``).
 
     Examples
     --------
     >>> inertia(0.0)
     (0.25, 0.5)
     """
-    return _inertia(h)
+    return 0.25 + h * h / 3.0, 0.5
 
 
-def _geometry(h, theta):
+def contact_geometry(h, theta):
     """``h~, sin, cos, tan, y_P, z_P`` at inclination ``theta`` (eq. 4, a = 1).
 
     This is the library's one definition of ``h~ = h sgn(theta)`` (which rim edge touches
@@ -82,3 +77,11 @@ def _geometry(h, theta):
     y_P = s - ht * c  # eq. (4)
     z_P = -(c + ht * s)  # eq. (4)
     return ht, s, c, s / c, y_P, z_P
+
+
+#: The kernels under the names by which the kernels of :mod:`rollingdisk.model.equations`
+#: and :mod:`rollingdisk.model.coulomb` call them: the compiled namespaces
+#: (:mod:`rollingdisk.engine.numba_core`, :mod:`rollingdisk.engine.pycore`, the Coulomb
+#: loop) bind the compiled functions by these names.
+_inertia = inertia
+_geometry = contact_geometry

@@ -26,6 +26,7 @@ import numpy as np
 
 from rollingdisk.model.quantity import (
     _DIMENSION_WORDS,
+    _float_or_inf,
     _from_quantity,
     _is_quantity,
     _quantity_of,
@@ -123,10 +124,7 @@ def read_input(kind: str, value, name: str = "value") -> tuple[str, float, str |
         raise ParameterTypeError(f"{name} must be {expect}, got {type(value).__name__} "
                                  f"{value!r}")
     else:
-        try:
-            x = float(value)
-        except OverflowError:
-            x = math.inf
+        x = _float_or_inf(value)
     if not math.isfinite(x):
         raise ParameterError(f"{name} must be {expect}, finite; got {value!r}")
     return how, x, unit

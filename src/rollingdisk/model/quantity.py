@@ -66,6 +66,15 @@ def _from_quantity(q, dim: str, si_unit: str, expect: str, name: str) -> float:
             from None
 
 
+def _float_or_inf(value) -> float:
+    """``float(value)``, an int beyond floating-point range (``10**400``) as ``inf``: the
+    callers refuse it as not finite, with their message."""
+    try:
+        return float(value)
+    except OverflowError:
+        return math.inf
+
+
 def _parse(value, kind: str, name: str) -> float:
     dim, si_unit, expect = _EXPECT[kind]
     if _is_quantity(value):
@@ -82,10 +91,7 @@ def _parse(value, kind: str, name: str) -> float:
         except ValueError:
             x = _parse_with_unit(text, dim, si_unit, expect, name, shown)
     else:
-        try:
-            x = float(value)
-        except OverflowError:
-            x = math.inf
+        x = _float_or_inf(value)
     if not math.isfinite(x):
         what = "not a number" if math.isnan(x) else "beyond floating-point range"
         raise ParameterError(f"{name} must be {expect}, finite and positive; got {shown}, "

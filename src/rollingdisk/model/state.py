@@ -33,7 +33,7 @@ def state_index(ground: str, name: str) -> int:
     return names.index(name)
 
 
-def _reduced_state(rough, y):
+def reduced_state(rough, y):
     """``(theta, omega1, omega2, omega3)`` out of a state vector of either ground, or of a
     reduced state (4 components, returned as they are)."""
     if y.shape[0] == 4:
@@ -43,13 +43,16 @@ def _reduced_state(rough, y):
     return y[5], y[7], y[8], y[9]
 
 
+_reduced_state = reduced_state  # the name the kernels and compiled namespaces call it by
+
+
 def _shape_error(ground: str, y, name: str = "y") -> ParameterError:
     names = state_names(ground)
     return ParameterError(f"{name} must have {len(names)} components on {ground} ground "
                           f"({', '.join(names)}), got {np.shape(y)}")
 
 
-def _as_state(ground: str, y, name: str = "y") -> np.ndarray:
+def as_state(ground: str, y, name: str = "y") -> np.ndarray:
     """``y`` as a float array of states: right length, finite (never a silent NaN).
 
     A non-number raises :class:`~rollingdisk.util.errors.ParameterTypeError`; a wrong
@@ -62,3 +65,6 @@ def _as_state(ground: str, y, name: str = "y") -> np.ndarray:
     if not np.all(np.isfinite(y)):
         raise ParameterError(f"{name} must be finite (no NaN or infinity)")
     return y
+
+
+_as_state = as_state  # the name model.coulomb and ivp.hybrid import

@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from rollingdisk.model.disk import check_h
-from rollingdisk.model.geometry import _geometry
+from rollingdisk.model.geometry import contact_geometry
 from rollingdisk.plotting.plots import check_dpi, disk_of, si_factor, trajectory_series
 from rollingdisk.util.checks import check_int, check_real
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
@@ -121,7 +121,7 @@ def disk_pose(h: float, X_C: float, Y_C: float, psi: float, theta: float, phi: f
     Z_C = None if Z_C is None else check_real("Z_C", Z_C)
     n = check_int("n", n, low=3, high=_RIM_POINTS_MAX)
     xi, eta, zeta = body_frame(psi, theta)
-    _, _, _, _, y_P, z_P = _geometry(h, theta)
+    _, _, _, _, y_P, z_P = contact_geometry(h, theta)
     y_P, z_P = float(y_P), float(z_P)
     C = np.array([X_C, Y_C, -z_P if Z_C is None else float(Z_C)])  # eq. (7)
     # body-fixed radial directions: xi, zeta turned by phi about eta (Rodrigues, v _|_ eta)
@@ -403,7 +403,7 @@ def draw_scene(fig, tf, frames, paths, head: str | Callable[[int], str],
         ax.set_xlim(x0, x1)
         ax.set_ylim(y0, y1)
         ax.set_zlim(z0, z1)
-        # no axis machinery (ticks, grids and panes cost ~40 % of a frame): the plane
+        # no axis machinery (ticks, grids and panes are much of a frame's cost): the plane
         # Z = 0 is drawn as one polygon under everything else
         ax.set_axis_off()
         ax.add_collection3d(_plane(x0, x1, y0, y1))

@@ -38,9 +38,8 @@ def _check_scale(scale) -> float:
     return check_real("scale", scale, low=0.0, high=SCALE_MAX, low_open=True)
 
 
-def figure4(scale: float = 1.0):
-    """Figure 4: ``Omega0^2 > 0`` and ``varpi^2 > 0`` in ``(theta0, r_C)``, rough ground,
-    for ``h = 0, 0.17, sqrt(3)/2, 5``.
+#: The Parameters and Returns of every ``figureN``, written once.
+_FIGURE_SECTIONS = """
 
     Parameters
     ----------
@@ -52,6 +51,18 @@ def figure4(scale: float = 1.0):
     matplotlib Figure
         With ``fig.maps``, the :class:`~rollingdisk.plotting.plots.MapPlot` of each panel.
     """
+
+
+def _figure_doc(f):
+    """``f`` with :data:`_FIGURE_SECTIONS` after its summary."""
+    f.__doc__ = f.__doc__.rstrip() + _FIGURE_SECTIONS
+    return f
+
+
+@_figure_doc
+def figure4(scale: float = 1.0):
+    """Figure 4: ``Omega0^2 > 0`` and ``varpi^2 > 0`` in ``(theta0, r_C)``, rough ground,
+    for ``h = 0, 0.17, sqrt(3)/2, 5``."""
     scale = _check_scale(scale)
     fig = _figure((10.0, 8.0))
     axs = fig.subplots(2, 2)
@@ -88,36 +99,16 @@ def _all_omega30_figure(ground: str, scale: float, zoom: tuple[tuple, tuple]):
     return fig
 
 
+@_figure_doc
 def figure5(scale: float = 1.0):
     """Figure 5: rough ground, region stable for every ``omega30`` in ``(theta0 [deg], h)``
-    (condition 46), with the small region near ``theta0 = 0`` magnified.
-
-    Parameters
-    ----------
-    scale : float
-        Grid resolution factor in ``(0, 4]`` (:data:`SCALE_MAX`).
-
-    Returns
-    -------
-    matplotlib Figure
-        With ``fig.maps``, the :class:`~rollingdisk.plotting.plots.MapPlot` of each panel.
-    """
+    (condition 46), with the small region near ``theta0 = 0`` magnified."""
     return _all_omega30_figure("rough", scale, ((0.0, 1.0), (0.6, 1.05)))
 
 
+@_figure_doc
 def figure7(scale: float = 1.0):
-    """Figure 7: as Figure 5 on smooth ground (condition 59).
-
-    Parameters
-    ----------
-    scale : float
-        Grid resolution factor in ``(0, 4]`` (:data:`SCALE_MAX`).
-
-    Returns
-    -------
-    matplotlib Figure
-        With ``fig.maps``, the :class:`~rollingdisk.plotting.plots.MapPlot` of each panel.
-    """
+    """Figure 7: as Figure 5 on smooth ground (condition 59)."""
     return _all_omega30_figure("smooth", scale, ((0.0, 15.0), (0.3, 1.0)))
 
 
@@ -131,36 +122,16 @@ def _surface_figure(ground: str, scale: float):
     return fig
 
 
+@_figure_doc
 def figure6(scale: float = 1.0):
     """Figure 6: rough ground, the surface ``varpi^2 = 0`` (eq. 45) in
-    ``(theta0, h, omega30)``; theta0 in radians.
-
-    Parameters
-    ----------
-    scale : float
-        Grid resolution factor in ``(0, 4]`` (:data:`SCALE_MAX`).
-
-    Returns
-    -------
-    matplotlib Figure
-        With ``fig.maps``, the :class:`~rollingdisk.plotting.plots.MapPlot` of each panel.
-    """
+    ``(theta0, h, omega30)``; theta0 in radians."""
     return _surface_figure("rough", scale)
 
 
+@_figure_doc
 def figure8(scale: float = 1.0):
-    """Figure 8: smooth ground, the surface ``varpi^2 = 0`` (eq. 55).
-
-    Parameters
-    ----------
-    scale : float
-        Grid resolution factor in ``(0, 4]`` (:data:`SCALE_MAX`).
-
-    Returns
-    -------
-    matplotlib Figure
-        With ``fig.maps``, the :class:`~rollingdisk.plotting.plots.MapPlot` of each panel.
-    """
+    """Figure 8: smooth ground, the surface ``varpi^2 = 0`` (eq. 55)."""
     return _surface_figure("smooth", scale)
 
 

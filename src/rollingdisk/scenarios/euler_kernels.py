@@ -11,7 +11,7 @@ import numpy as np
 
 from rollingdisk.model import coulomb as _cl
 from rollingdisk.model.disk import Disk
-from rollingdisk.model.geometry import _geometry
+from rollingdisk.model.geometry import contact_geometry
 from rollingdisk.scenarios.euler_toy import EulerDisk
 from rollingdisk.util.checks import check_real, real_array
 
@@ -41,7 +41,7 @@ def _rhs(h, mu, u_s, c_roll, c_air, eps, x, c_bl=0.0):
     Element-wise: ``x`` may be a (9,) vector (the integrator) or a (9, N) array (the
     recorded steps, in one call)."""
     v_Cx, v_Cy, theta, w1, w2, w3 = x[0], x[1], x[2], x[3], x[4], x[5]
-    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    ht, s, c, p, y_P, z_P = contact_geometry(h, theta)
     u_x = v_Cx - w2 + ht * w3  # eq. (6)
     u_y = v_Cy - w1 * z_P
     n = np.sqrt(u_x * u_x + u_y * u_y)
@@ -89,7 +89,7 @@ def _energy(h, x):
 def _observables(h, x):
     """``alpha, Omega, contact-point speed`` of reduced states (element-wise)."""
     v_Cx, v_Cy, theta, w1, w2, w3 = x[:6]
-    ht, s, c, p, y_P, z_P = _geometry(h, theta)
+    ht, s, c, p, y_P, z_P = contact_geometry(h, theta)
     Om = w3 / c
     # contact point (eq. 5) X_P = X_C - y_P sin psi, Y_P = Y_C + y_P cos psi, d y_P/d theta
     # = -z_P: velocity (v_Cx - y_P Omega, v_Cy - z_P omega1) in Cxyz
@@ -110,5 +110,5 @@ def _kicked_state(toy: EulerDisk, kick: float) -> np.ndarray:
     so that the disk still rolls (eq. 6)."""
     x0 = _initial_state(toy)
     x0[3] += kick
-    x0[1] = kick * _geometry(toy.h, x0[2])[5]
+    x0[1] = kick * contact_geometry(toy.h, x0[2])[5]
     return x0

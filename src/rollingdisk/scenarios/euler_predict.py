@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from rollingdisk.model.geometry import _inertia
+from rollingdisk.model.geometry import inertia
 from rollingdisk.scenarios.euler_toy import EXPONENT_NAMES, EulerDisk
 from rollingdisk.util.checks import check_int, check_real
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
@@ -31,7 +31,7 @@ def _family(h, alpha):
     Om = np.sqrt(Om2)
     w3 = Om * c
     w2 = h * w3
-    k1 = _inertia(h)[0]  # eq. (10)
+    k1 = inertia(h)[0]  # eq. (10)
     E = 0.5 * k1 * w3 * w3 + 0.25 * w2 * w2 + c + h * s  # -z_P = c + h s
     return E, Om, abs(w2 * c - w3 * s), w3, s - h * c
 

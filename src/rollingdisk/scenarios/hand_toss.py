@@ -47,6 +47,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from rollingdisk.model.disk import Disk
+from rollingdisk.model.equations import check_disk
 from rollingdisk.scenarios.toss import EnsembleResult, TossDistribution, toss_ensemble
 from rollingdisk.util.checks import check_int, check_real
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
@@ -161,12 +162,6 @@ class HandLaunch:
         return v + np.sqrt(disc)
 
 
-def _check_disk(disk) -> Disk:
-    if not isinstance(disk, Disk):
-        raise ParameterTypeError(f"disk must be a rollingdisk.Disk, got {disk!r}")
-    return disk
-
-
 def precession_rate(disk: Disk, flip_rate, psi):
     """``Omega_p``, the rate at which the normal turns about the angular momentum (H2).
 
@@ -189,7 +184,7 @@ def precession_rate(disk: Disk, flip_rate, psi):
     >>> float(precession_rate(Disk(0.0), 2.0, 0.0))  # k1^2/k2^2 = 1/2: spin about the axis
     4.0
     """
-    disk = _check_disk(disk)
+    disk = check_disk(disk)
     psi = np.asarray(psi, dtype=float)
     r = disk.k1_sq / disk.k2_sq
     out = np.asarray(flip_rate, dtype=float) / np.sqrt(np.sin(psi) ** 2
@@ -205,7 +200,7 @@ def launch_state(disk: Disk, height: float, upward_speed: float, flip_rate: floa
     ``xi`` and ``omega2 = (k1^2/k2^2) Omega_p cos psi`` about the axis: ``L = |L| (sin psi X +
     cos psi Z)`` with ``|L| = k1^2 Omega_p`` and ``|omega| = flip_rate``.
     """
-    disk = _check_disk(disk)
+    disk = check_disk(disk)
     psi = check_real("psi", psi, low=0.0, high=_HALF_PI)
     flip_rate = check_real("flip_rate", flip_rate, low=0.0)
     om = precession_rate(disk, flip_rate, psi)
@@ -329,7 +324,7 @@ def caught_ensemble(disk: Disk, launch: HandLaunch, n: int, rng_seed: int, *,
     >>> abs(r.probability - 0.5) < 0.01  # a pure flip is fair
     True
     """
-    disk = _check_disk(disk)
+    disk = check_disk(disk)
     if not isinstance(launch, HandLaunch):
         raise ParameterTypeError(f"launch must be a HandLaunch, got {launch!r}")
     n = check_int("n", n, low=1)
@@ -396,7 +391,7 @@ def table_ensemble(disk: Disk, launch: HandLaunch, n: int, rng_seed: int, *,
         ``launch.height < h`` (the coin would start inside the table), ``e`` outside
         ``[0, 1]``, ``mu < 0``.
     """
-    disk = _check_disk(disk)
+    disk = check_disk(disk)
     if not isinstance(launch, HandLaunch):
         raise ParameterTypeError(f"launch must be a HandLaunch, got {launch!r}")
     if launch.height < disk.h:

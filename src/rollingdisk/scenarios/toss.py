@@ -89,8 +89,8 @@ class TossResult:
 
 
 #: Mode events a contact segment of a toss may take (stick-slip chatter on the rim): a
-#: toss that chatters past them is ``undecided`` either way, so it stops early (measured:
-#: 10 000 events cost about 1.8 s a toss, 1000 about 0.2 s, same verdicts).
+#: toss that chatters past them is ``undecided`` either way, so it stops early (a ten
+#: times larger budget gave the same verdicts at a ten times larger cost).
 TOSS_MAX_TRANSITIONS = 1000
 
 
@@ -278,8 +278,8 @@ class EnsembleResult:
 def _load_compiled():
     """An ensemble is a long job: load the compiled contact phase
     (:mod:`rollingdisk.ivp.fastsegment`) at once instead of after the process's
-    uncompiled budget (compiling it if numba's cache is cold: about 7 s, once per
-    machine); without numba the tosses run on the scipy path."""
+    uncompiled budget (compiling it if numba's cache is cold, once per machine); without
+    numba the tosses run on the scipy path."""
     from rollingdisk.ivp import fastsegment as _fs
 
     if _fs.available():

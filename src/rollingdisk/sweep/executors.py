@@ -16,7 +16,7 @@ from collections.abc import Callable, Iterator
 
 import numpy as np
 
-from rollingdisk.model.geometry import _inertia
+from rollingdisk.model.geometry import inertia
 from rollingdisk.model.outcomes import outcome
 from rollingdisk.sweep.grid import BOUND_FACTOR, GROW_HI, GROW_LO, _setup, _Spec
 from rollingdisk.util.errors import ParameterError
@@ -43,7 +43,7 @@ def _kernel_args(spec: _Spec, setup, a0=None):
     a0 = a0_ if a0 is None else a0
     ok = np.all(np.isfinite(x0), axis=1)
     h = h[ok]
-    k1 = _inertia(h)[0]  # eq. (10)
+    k1 = inertia(h)[0]  # eq. (10)
     a0o = np.where(np.isfinite(a0[ok]), a0[ok], 1.0)
     return ok, (spec.grid.ground == "rough", h, k1, np.full(k1.shape, 0.5),
                 np.ascontiguousarray(x0[ok]), theta_ref[ok], a0o, GROW_LO, GROW_HI,

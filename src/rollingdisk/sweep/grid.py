@@ -255,18 +255,18 @@ def _setup_points(ground, second, points, tilt, kick):
 
 def _setup_circles(g, second, h, theta0, v, tilt, kick):
     """:func:`_setup` for circles given by omega30 or Omega0, element-wise on the chunk
-    (eqs. 3, 28/34 through :func:`rollingdisk.theory.steady._omega20`, and eq. 40/51 through
-    :func:`rollingdisk.theory.oscillations.varpi2_closed_form`): 26 -> 0.2 us a point, which
-    kept the Python set-up from limiting the speed-up of the threads."""
+    (eqs. 3, 28/34 through :func:`rollingdisk.theory.steady.steady_omega20`, and eq. 40/51
+    through :func:`rollingdisk.theory.oscillations.varpi2_closed_form`), so that the Python set-up
+    does not limit the speed-up of the threads."""
     from rollingdisk.model.geometry import h_tilde
     from rollingdisk.theory import oscillations as _stability
-    from rollingdisk.theory.steady import _omega20
+    from rollingdisk.theory.steady import steady_omega20
 
     s, c = np.sin(theta0), np.cos(theta0)
     omega30 = v if second == "omega30" else v * c  # eq. (3)
     ht = h_tilde(h, theta0)
     with np.errstate(all="ignore"):
-        omega20 = _omega20(g.ground, h, ht, s, c, omega30)
+        omega20 = steady_omega20(g.ground, h, ht, s, c, omega30)
     # as steady_motion: Omega0 = 0 is no circle, theta0 = 0 is outside the theory for h > 0
     ok = (v != 0) & ~((h > 0) & (theta0 == 0)) & np.isfinite(omega20)
     n = h.size

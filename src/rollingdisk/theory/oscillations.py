@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground, check_h, h_of
-from rollingdisk.model.equations import _reduced_rhs
+from rollingdisk.model.equations import reduced_rhs
 from rollingdisk.model.geometry import h_tilde
 from rollingdisk.theory._points import at_a_point, why_overflow
 from rollingdisk.theory.steady import Omega0_sq, SteadyMotion, _map_domain, _why_no_circle
@@ -258,7 +258,7 @@ def reduced_jacobian(h: float, ground: str, theta0: float, omega20: float,
     for j in (1, 2, 3):
         xc = x0.astype(complex)
         xc[j] += 1j * eps
-        J[:, j] = np.array(_reduced_rhs(ground == "rough", h, xc)).imag / eps
+        J[:, j] = np.array(reduced_rhs(ground == "rough", h, xc)).imag / eps
     # theta column: stay away from pi/2.  Near theta = 0 the stencil may cross zero, where
     # h~ = h sgn(theta) jumps; evaluating there with -h (h enters only as h~ and h^2)
     # continues the branch of theta0 analytically across zero.
@@ -270,7 +270,7 @@ def reduced_jacobian(h: float, ground: str, theta0: float, omega20: float,
     def g(theta):
         x = x0.copy()
         x[0] = theta
-        return np.array(_reduced_rhs(ground == "rough", h if theta * side > 0 else -h, x))
+        return np.array(reduced_rhs(ground == "rough", h if theta * side > 0 else -h, x))
 
     def central(delta):
         return (g(theta0 + delta) - g(theta0 - delta)) / (2.0 * delta)

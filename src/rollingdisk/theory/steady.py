@@ -35,7 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground, check_h, h_of
-from rollingdisk.model.geometry import _inertia, h_tilde
+from rollingdisk.model.geometry import h_tilde, inertia
 from rollingdisk.theory._points import at_a_point, why_overflow
 from rollingdisk.util.checks import check_real, real_array
 from rollingdisk.util.errors import ParameterError
@@ -250,7 +250,7 @@ def _describe_r_range(name: str, lo: float | None, hi: float | None) -> str:
     return f"{name} > {lo:.6g}"
 
 
-def _omega20(ground: str, h, ht, s, c, omega30):
+def steady_omega20(ground: str, h, ht, s, c, omega30):
     """``omega20`` of the steady motion with ``omega30`` at the tilt with ``sin = s``,
     ``cos = c`` (``h~ = ht``): eq. (28) on rough, eq. (34) on smooth ground, solved for
     omega20.  Element-wise on arrays (the sweeps use it for whole grids)."""
@@ -259,7 +259,7 @@ def _omega20(ground: str, h, ht, s, c, omega30):
     if ground == "rough":
         return (((3.0 + 16.0 * h * h) * p + 12.0 * ht) * omega30 * omega30 - 12.0 * y_P) / (
             6.0 * (3.0 + 2.0 * ht * p) * omega30)
-    k1, k2 = _inertia(h)  # eq. (10)
+    k1, k2 = inertia(h)  # eq. (10)
     return (k1 * p * omega30 * omega30 - y_P) / k2 / omega30  # eq. (34); k2 omega30 may underflow
 
 
@@ -274,7 +274,7 @@ def _build(disk: Disk, ground: str, theta0: float, Omega0: float) -> SteadyMotio
         raise NoSteadyMotion(
             f"Omega0 = {Omega0:.6g} is beyond floating-point range for this steady motion "
             "(omega30 = Omega0 cos(theta0) underflows to 0): choose 1e-100 < |Omega0| < 1e100")
-    omega20 = _omega20(ground, h, ht, s, c, omega30)
+    omega20 = steady_omega20(ground, h, ht, s, c, omega30)
     if ground == "rough":
         v_Cx0 = omega20 - ht * omega30  # eq. (18) with v_Px0 = 0
         r_C = -v_Cx0 / Omega0  # eq. (24)

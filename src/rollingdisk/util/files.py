@@ -215,11 +215,7 @@ def check_writable(path, *, name: str = "out", folder: bool = False) -> Path:
     if target.exists() and not folder and not (target.is_file() or target.is_dir()):
         raise ParameterError(f"{name}: {target} is not a regular file, a character device "
                              "or a FIFO; give a file name")
-    parent = target.parent
-    if not parent.is_dir():
-        raise ParameterError(f"{name}: no such folder: {parent}")
-    if not os.access(parent, os.W_OK | os.X_OK):
-        raise ParameterError(f"{name}: the folder {parent} is not writable")
+    check_parent_writable(target, name)
     if folder:
         if target.exists() and not target.is_dir():
             raise ParameterError(f"{name}: {target} exists and is not a folder")
@@ -230,6 +226,16 @@ def check_writable(path, *, name: str = "out", folder: bool = False) -> Path:
             raise ParameterError(f"{name}: {target} is read-only; remove it or choose "
                                  "another name")
     return target
+
+
+def check_parent_writable(target: Path, name: str) -> None:
+    """Refuse ``target`` (named ``name`` in the message) unless its parent is an existing
+    folder this process may create files in: :class:`ParameterError`."""
+    parent = target.parent
+    if not parent.is_dir():
+        raise ParameterError(f"{name}: no such folder: {parent}")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise ParameterError(f"{name}: the folder {parent} is not writable")
 
 
 def check_replaceable(path, names, *, name: str = "out") -> Path:

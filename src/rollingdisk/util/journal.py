@@ -24,6 +24,7 @@ from pathlib import Path
 
 from rollingdisk.util import lock as _locks
 from rollingdisk.util.errors import ParameterError
+from rollingdisk.util.files import check_parent_writable
 
 __all__ = ["Journal", "open_journal", "check_journal_path"]
 
@@ -80,11 +81,7 @@ def check_journal_path(path, *, name: str = "results") -> Path:
     if mode is not None and not stat.S_ISREG(mode):
         raise ParameterError(f"{name}: {target} is not a regular file (a device, a FIFO or "
                              "a socket); give a file name")
-    parent = target.parent
-    if not parent.is_dir():
-        raise ParameterError(f"{name}: no such folder: {parent}")
-    if not os.access(parent, os.W_OK | os.X_OK):
-        raise ParameterError(f"{name}: the folder {parent} is not writable")
+    check_parent_writable(target, name)
     if mode is not None and not os.access(target, os.R_OK | os.W_OK):
         raise ParameterError(f"{name}: {target} is not readable and writable; remove it or "
                              "choose another name")

@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from rollingdisk.model.geometry import _geometry
+from rollingdisk.model.geometry import contact_geometry
 from rollingdisk.model.state import state_index, state_names
 from rollingdisk.theory.exact.quadrature import _EPS, _Budget, _BudgetSpent, _theta_coefficients
 
@@ -19,7 +19,7 @@ _CHUNK = 1 << 18  # complex numbers per block of a Fourier sum (4 MiB)
 
 def _orbit_normal_force(rough, h, theta, w2, w3, q):
     a1, c1, _, _ = _theta_coefficients(rough, h, theta, w2, w3)
-    y_P, z_P = _geometry(h, theta)[4:6]
+    y_P, z_P = contact_geometry(h, theta)[4:6]
     return 1.0 + z_P * q - y_P * (a1 + c1 * q)  # eq. (11)
 
 
@@ -105,7 +105,7 @@ class _Orbit:
         dphi = 2.0 * np.pi * self.cph[0].real
         self.kappa = dpsi / (2.0 * np.pi)
         if self.rough:
-            ht, s, cc, p, y_P, z_P = _geometry(self.h, theta)
+            ht, s, cc, p, y_P, z_P = contact_geometry(self.h, theta)
             w = (w2 - ht * w3) * F + 1j * (w1 * z_P) * F  # (v_Cx + i v_Cy) dt/du, eq. (37)
             psi_per = self._periodic_on_grid(self.cOm)
             self.cG = np.fft.fft(w * np.exp(1j * psi_per)) / M
@@ -213,7 +213,7 @@ class _SteadyOrbit:
         theta0, w2, w3 = y0[it], y0[it + 3], y0[it + 4]
         self.Omega, self.omega = w3 / math.cos(theta0), w2 - w3 * math.tan(theta0)
         if rough:
-            ht, s, c, p, y_P, z_P = _geometry(h, theta0)
+            ht, s, c, p, y_P, z_P = contact_geometry(h, theta0)
             self.v = complex(w2 - ht * w3, 0.0)  # eq. (37) with omega1 = 0
         self.fit = None
 

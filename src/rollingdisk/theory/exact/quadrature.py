@@ -11,7 +11,7 @@ import time
 
 import numpy as np
 
-from rollingdisk.model.equations import _rough_omega_dot, _smooth_omega_dot
+from rollingdisk.model.equations import rough_omega_dot, smooth_omega_dot
 from rollingdisk.util.errors import ParameterError
 
 __all__ = ["TIME_LIMIT", "MAX_EVALS", "MAX_TERMS"]
@@ -34,7 +34,7 @@ def _theta_coefficients(rough: bool, h: float, theta, w2, w3):
     as the difference of the kernel at ``omega1 = 1`` and ``0`` with the orbit's rates it
     lost ``eps (omega2^2 + omega3^2)`` to cancellation, noise that (times ``q``) stalled the
     theta-ODE at rates ~1e5."""
-    kernel = _rough_omega_dot if rough else _smooth_omega_dot
+    kernel = rough_omega_dot if rough else smooth_omega_dot
     zero, one = 0.0 * theta, 1.0 + 0.0 * theta
     a1 = kernel(h, theta, zero, w2, w3)[0]
     _, b2, b3 = kernel(h, theta, one, w2, w3)

@@ -11,7 +11,7 @@ import math
 import numpy as np
 
 from rollingdisk.model.disk import Disk
-from rollingdisk.model.equations import _check_disk, _normal_force
+from rollingdisk.model.equations import check_disk, normal_force
 from rollingdisk.model.state import state_index
 from rollingdisk.theory.exact.chebyshev import _Fit, _leg_time
 from rollingdisk.theory.exact.inputs import _check_budget_keys, _check_ground, _check_state
@@ -79,7 +79,7 @@ def exact_motion(disk: Disk, ground: str, y0, *, time_limit: float = TIME_LIMIT,
     >>> ex.status, round(ex.frequency / rd.stability(m).varpi, 6)
     ('bounded', 1.0)
     """
-    disk = _check_disk(disk)
+    disk = check_disk(disk)
     ground = _check_ground(ground)
     y0 = _check_state(ground, y0)
     budget = _Budget(check_real("time_limit", time_limit, low=0.0, low_open=True),
@@ -165,7 +165,7 @@ def _start(disk, ground, y0):
     if h > 0 and theta0 == 0.0:
         raise ParameterError("theta = 0 is outside the model for h > 0 (the disk stands "
                              "on its rim edge's line); start with theta != 0")
-    F_z0 = float(_normal_force(ground == "rough", h, y0))
+    F_z0 = float(normal_force(ground == "rough", h, y0))
     if F_z0 < 0.0:
         raise ParameterError(f"the normal force F_z (eq. 11) is {F_z0:.6g} < 0 at the "
                              "start: the disk would lift off at once")
