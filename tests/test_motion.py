@@ -20,7 +20,6 @@ from rollingdisk.phases.impact import rim_change_ratio
 from rollingdisk.phases.motion import (
     FlatSegment,
     FlightSegment,
-    flat_friction,
     simulate_to_rest,
 )
 from rollingdisk.scenarios.toss import (
@@ -128,25 +127,6 @@ def test_flat_sliding_disk_stops_at_classic_time():
     assert res.impacts[0].kind == "face"
     assert res.impacts[0].energy_lost == pytest.approx(0.3, rel=1e-12)
     assert res.energy_balance <= 1e-12
-
-
-def test_flat_friction_limits_and_brute_force():
-    assert flat_friction(2.0, 0.0) == (1.0, 0.0)
-    assert flat_friction(0.0, 3.0) == (0.0, 2.0 / 3.0)  # int r dA/pi = 2/3
-    # brute force: midpoint rule on a fine Cartesian grid over the unit disk
-    n = 1500
-    x = (np.arange(n) + 0.5) / n * 2 - 1
-    X, Y = np.meshgrid(x, x)
-    inside = X ** 2 + Y ** 2 <= 1
-    v, om = 0.7, 1.3
-    wx, wy = v - om * Y, om * X
-    nw = np.hypot(wx, wy)
-    dA = (2.0 / n) ** 2 / math.pi
-    f = np.sum((wx / nw)[inside]) * dA
-    tau = np.sum(((X * wy - Y * wx) / nw)[inside]) * dA
-    got = flat_friction(v, om)
-    assert got[0] == pytest.approx(f, abs=2e-3)
-    assert got[1] == pytest.approx(tau, abs=2e-3)
 
 
 def test_bad_input_named():
