@@ -163,6 +163,41 @@ def test_energy_barrier_is_the_balancing_height():
         assert energy_barrier(h) == pytest.approx(math.cos(th) + h * math.sin(th), 1e-15)
 
 
+@pytest.mark.parametrize("h, c", [(0.1, 0.01), (0.3, 0.05), (1.0, 0.2)])
+def test_energy_barrier_is_the_lowest_height_rolling_resistance_holds(h, c):
+    """At rest on a rim edge the arm of gravity about the edge, ``h cos theta - sin
+    theta`` (the centre's horizontal offset from the edge), is held by rolling resistance
+    while it is at most ``c``; the centre is then at ``Z_C = cos theta + h sin theta``
+    (eq. 7).  The least such height, by root finding on the arm, is the barrier."""
+    from scipy.optimize import brentq
+
+    th_b = math.atan(h)
+    ends = [brentq(lambda t, s=s: h * math.cos(t) - math.sin(t) - s * c, th_b - 1.0, th_b + 1.0,
+                   xtol=1e-15) for s in (1.0, -1.0)]
+    lowest = min(math.cos(t) + h * math.sin(t) for t in ends)
+    assert energy_barrier(h, c) == pytest.approx(lowest, rel=1e-14)
+    with pytest.raises(ParameterError, match="rolling_resistance"):
+        energy_barrier(h, math.sqrt(1.0 + h * h))
+
+
+@pytest.mark.parametrize("arm", [0.005, -0.005, 0.0099])
+def test_a_disk_held_on_its_rim_edge_rests_there_and_is_an_edge(arm):
+    """A coin standing still on a rim edge just past (or before) its balance tilt, held by
+    rolling resistance (arm of gravity ``|arm| < c``): at rest on the edge, the outcome
+    ``edge``; the energy rule must not call it (its energy is below sqrt(1 + h^2))."""
+    from rollingdisk.scenarios.toss import _classify, _trap
+
+    h, c = 0.1, 0.01
+    R = math.sqrt(1.0 + h * h)
+    theta = math.atan(h) + math.asin(arm / R)
+    y0 = [0.0, 0.0, 0.0, 0.0, 0.0, theta, 0.0, 0.0, 0.0, 0.0]  # at rest on rim edge +1
+    assert math.cos(theta) + h * math.sin(theta) < energy_barrier(h)
+    res = simulate_to_rest(rd.Disk(h), rd.Coulomb(0.5, rolling_resistance=c), (0.0, 50.0),
+                           y0, decide=_trap(h, c), max_wall=20.0)
+    assert res.status == "at-rest" and "held by rolling resistance" in res.message
+    assert _classify(h, res) == ("edge", "rest")
+
+
 _QUICK = TossDistribution(lift=(0.2, 0.6), velocity=(0.0, 0.5), spin=(-3.0, 3.0),
                           axial_spin=(0.0, 0.0), precession=(0.0, 0.0),
                           horizontal_velocity=(0.0, 0.0))
