@@ -20,7 +20,6 @@ from rollingdisk.phases.impact import rim_change_ratio
 from rollingdisk.phases.motion import (
     FlatSegment,
     FlightSegment,
-    flat_friction,
     simulate_to_rest,
 )
 from rollingdisk.scenarios.toss import (
@@ -130,25 +129,6 @@ def test_flat_sliding_disk_stops_at_classic_time():
     assert res.energy_balance <= 1e-12
 
 
-def test_flat_friction_limits_and_brute_force():
-    assert flat_friction(2.0, 0.0) == (1.0, 0.0)
-    assert flat_friction(0.0, 3.0) == (0.0, 2.0 / 3.0)  # int r dA/pi = 2/3
-    # brute force: midpoint rule on a fine Cartesian grid over the unit disk
-    n = 1500
-    x = (np.arange(n) + 0.5) / n * 2 - 1
-    X, Y = np.meshgrid(x, x)
-    inside = X ** 2 + Y ** 2 <= 1
-    v, om = 0.7, 1.3
-    wx, wy = v - om * Y, om * X
-    nw = np.hypot(wx, wy)
-    dA = (2.0 / n) ** 2 / math.pi
-    f = np.sum((wx / nw)[inside]) * dA
-    tau = np.sum(((X * wy - Y * wx) / nw)[inside]) * dA
-    got = flat_friction(v, om)
-    assert got[0] == pytest.approx(f, abs=2e-3)
-    assert got[1] == pytest.approx(tau, abs=2e-3)
-
-
 def test_bad_input_named():
     d, g = rd.Disk(0.1), rd.Coulomb(0.5)
     s0 = [0, 0, 2.0, 0, 0.4, 0, 0, 0, 0, 0, 0, 0]
@@ -181,6 +161,41 @@ def test_energy_barrier_is_the_balancing_height():
     for h in (0.0, 0.3, 1.2):
         th = math.atan(h)  # centre straight above the rim edge
         assert energy_barrier(h) == pytest.approx(math.cos(th) + h * math.sin(th), 1e-15)
+
+
+@pytest.mark.parametrize("h, c", [(0.1, 0.01), (0.3, 0.05), (1.0, 0.2)])
+def test_energy_barrier_is_the_lowest_height_rolling_resistance_holds(h, c):
+    """At rest on a rim edge the arm of gravity about the edge, ``h cos theta - sin
+    theta`` (the centre's horizontal offset from the edge), is held by rolling resistance
+    while it is at most ``c``; the centre is then at ``Z_C = cos theta + h sin theta``
+    (eq. 7).  The least such height, by root finding on the arm, is the barrier."""
+    from scipy.optimize import brentq
+
+    th_b = math.atan(h)
+    ends = [brentq(lambda t, s=s: h * math.cos(t) - math.sin(t) - s * c, th_b - 1.0, th_b + 1.0,
+                   xtol=1e-15) for s in (1.0, -1.0)]
+    lowest = min(math.cos(t) + h * math.sin(t) for t in ends)
+    assert energy_barrier(h, c) == pytest.approx(lowest, rel=1e-14)
+    with pytest.raises(ParameterError, match="rolling_resistance"):
+        energy_barrier(h, math.sqrt(1.0 + h * h))
+
+
+@pytest.mark.parametrize("arm", [0.005, -0.005, 0.0099])
+def test_a_disk_held_on_its_rim_edge_rests_there_and_is_an_edge(arm):
+    """A coin standing still on a rim edge just past (or before) its balance tilt, held by
+    rolling resistance (arm of gravity ``|arm| < c``): at rest on the edge, the outcome
+    ``edge``; the energy rule must not call it (its energy is below sqrt(1 + h^2))."""
+    from rollingdisk.scenarios.toss import _classify, _trap
+
+    h, c = 0.1, 0.01
+    R = math.sqrt(1.0 + h * h)
+    theta = math.atan(h) + math.asin(arm / R)
+    y0 = [0.0, 0.0, 0.0, 0.0, 0.0, theta, 0.0, 0.0, 0.0, 0.0]  # at rest on rim edge +1
+    assert math.cos(theta) + h * math.sin(theta) < energy_barrier(h)
+    res = simulate_to_rest(rd.Disk(h), rd.Coulomb(0.5, rolling_resistance=c), (0.0, 50.0),
+                           y0, decide=_trap(h, c), max_wall=20.0)
+    assert res.status == "at-rest" and "held by rolling resistance" in res.message
+    assert _classify(h, res) == ("edge", "rest")
 
 
 _QUICK = TossDistribution(lift=(0.2, 0.6), velocity=(0.0, 0.5), spin=(-3.0, 3.0),

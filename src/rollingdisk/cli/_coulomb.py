@@ -8,6 +8,8 @@ from rollingdisk.cli._format import finite_or_none, has_scale, progress_bar
 
 __all__ = ["FRICTION", "coulomb_ground", "run_coulomb", "run_until_rest"]
 
+#: Coefficient of restitution of ``--until-rest`` when ``--restitution`` is not given.
+RESTITUTION = 0.5
 #: The options that describe the friction (they need --ground coulomb).
 FRICTION = ("mu", "mu_k", "rolling_resistance", "pivot", "air")
 
@@ -20,9 +22,14 @@ def coulomb_ground(args, disk):
     if getattr(args, "animate", None) is not None and not getattr(args, "until_rest", False):
         raise CLIError("rollingdisk simulate: --animate needs --until-rest (use "
                        "rollingdisk animate for a steady motion)")
+    if getattr(args, "restitution", None) is not None and not getattr(args, "until_rest",
+                                                                       False):
+        raise CLIError("rollingdisk simulate: --restitution needs --until-rest (impacts "
+                       "happen only past the guards)")
     if args.ground != "coulomb":
         if extra:
-            raise CLIError(f"rollingdisk simulate: {', '.join(extra)} need --ground coulomb")
+            verb = "needs" if len(extra) == 1 else "need"
+            raise CLIError(f"rollingdisk simulate: {', '.join(extra)} {verb} --ground coulomb")
         return None
     if args.mu is None:
         raise CLIError("rollingdisk simulate: --ground coulomb needs --mu (static friction "
@@ -96,17 +103,21 @@ def run_until_rest(args, disk, ground, motion) -> tuple[dict, list]:
     :func:`rollingdisk.phases.motion.simulate_to_rest`; its summary and phase changes."""
     from rollingdisk.phases.motion import simulate_to_rest
 
-    if args.out is not None:
-        raise CLIError("rollingdisk simulate: --out is not written with --until-rest (a run "
-                       "of several phases has no single state layout); use --json")
     if args.animate is not None:
         from rollingdisk.util.files import check_writable
 
         check_writable(args.animate, name="--animate")
     y0 = _coulomb_state(args, disk, motion)
     _check_finite_start(disk, ground, y0)
-    res = simulate_to_rest(disk, ground, (0.0, args.t_end), y0, e=args.restitution,
+    e = RESTITUTION if args.restitution is None else args.restitution
+    res = simulate_to_rest(disk, ground, (0.0, args.t_end), y0, e=e,
                            max_wall=args.max_wall_time)
+    if args.out is not None:  # the whole motion, every phase in one layout
+        from rollingdisk.phases.columns import write_motion_csv
+        from rollingdisk.util.files import atomic_file
+
+        with atomic_file(args.out, "w", newline="") as fh:
+            write_motion_csv(fh, res, si=has_scale(disk))
     if args.animate is not None:
         from rollingdisk.plotting.motion_anim import animate_motion
 
@@ -115,7 +126,7 @@ def run_until_rest(args, disk, ground, motion) -> tuple[dict, list]:
     record = {
         "status": res.status, "message": res.message, "ground": "coulomb",
         **{k: v for k, v in ground.as_dict().items() if k != "ground"},
-        "h": disk.h, "restitution": args.restitution, "t_end": float(res.t_end),
+        "h": disk.h, "restitution": e, "t_end": float(res.t_end),
         "transitions": transitions, "impacts": [x.as_dict() for x in res.impacts],
         "n_impacts": len(res.impacts), "energy_balance": float(res.energy_balance),
         "impact_loss": float(res.impact_loss), "dissipated_total": float(res.dissipated),

@@ -96,9 +96,9 @@ def configure(sub):
     c.add_argument("--animate", default=None, metavar="FILE.gif",
                    help="with --until-rest: a 3D animation of the whole motion (flight, "
                    "bounces, rolling, the flat disk) to FILE.gif")
-    c.add_argument("--restitution", type=real("restitution", low=0.0, high=1.0), default=0.5,
-                   help="coefficient of restitution of the impacts with --until-rest, in "
-                   "[0, 1] (default 0.5)")
+    c.add_argument("--restitution", type=real("restitution", low=0.0, high=1.0), default=None,
+                   help="coefficient of restitution of the impacts, in [0, 1] (default 0.5); "
+                   "only with --until-rest")
     add_perturbation_args(p)
     t_end_arg(p, high=SIMULATE_T_END_MAX)
     add_tolerance_args(p)
@@ -122,7 +122,10 @@ def configure(sub):
     alias(p, "--max-wall", "--max-wall-time", dest="max_wall_time",
           type=real("max_wall_time", low=0.0, high=86400.0, low_open=True))
     p.add_argument("--out", type=str, default=None, metavar="FILE.csv",
-                   help="write the trajectory as CSV (t, X_C, Y_C, psi, theta, phi, omega1, "
+                   help="write the trajectory as CSV; with --until-rest the whole motion in "
+                   "one layout for every phase (t, phase, X_C, Y_C, Z_C, psi, theta, phi, V_X, "
+                   "V_Y, V_Z, omega1, omega2, omega3, E); else (t, X_C, Y_C, psi, theta, phi, "
+                   "omega1, "
                    "omega2, omega3, X_P, Y_P, F_x, F_y, F_z, E; smooth and coulomb ground "
                    "add V_X, V_Y; coulomb ground adds mode: 0 rolling, 1 sliding, 2 and 3 the same "
                    "with the pivot stuck, 4-7 the first four with the rolling resistance "

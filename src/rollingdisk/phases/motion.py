@@ -35,6 +35,7 @@ from rollingdisk.model.coulomb import MODE_NAMES, coulomb_contact, coulomb_energ
 from rollingdisk.model.disk import Disk
 from rollingdisk.model.ground import Coulomb
 from rollingdisk.model.outcomes import outcome
+from rollingdisk.phases.flat import flat_friction, flat_run
 from rollingdisk.phases.impact import (
     _cross,
     _lowest_height,
@@ -290,129 +291,6 @@ def _normalise_launch(s):
         s[5] += math.pi
         s[9], s[11] = -s[9], -s[11]
     return s
-
-
-# -------------------------------------------------------------------- flat disk
-_NR, _NPHI = 40, 96
-_xr, _wr = np.polynomial.legendre.leggauss(_NR)
-_RHO = 0.5 * (_xr + 1.0)
-_WRHO = 0.5 * _wr * _RHO  # rho d rho
-_PHI = (np.arange(_NPHI) + 0.5) * (2.0 * math.pi / _NPHI)
-_RR, _PP = np.meshgrid(_RHO, _PHI, indexing="ij")
-_WW = np.outer(_WRHO, np.full(_NPHI, 2.0 * math.pi / _NPHI)) / math.pi  # pressure 1/pi
-
-
-def flat_friction(speed: float, spin: float) -> tuple[float, float]:
-    """Friction on a flat disk sliding and spinning on its face, per unit ``mu m g``.
-
-    Parameters
-    ----------
-    speed : float
-        ``|V| >= 0`` of the centre [``sqrt(a g)``].
-    spin : float
-        ``Omega >= 0`` about the vertical [``sqrt(g/a)``].
-
-    Returns
-    -------
-    (f, tau) : (float, float)
-        The force opposes ``V`` with magnitude ``mu m g f`` and the torque opposes the
-        spin with magnitude ``mu m g a tau``.
-
-    Notes
-    -----
-    Uniform pressure ``p = m g/(pi a^2)`` and Coulomb friction at each point against its
-    slip ``w = V + Omega z x r``: ``F = -mu int p w/|w| dA``, ``T = -mu int p r x w/|w| dA``.
-    By the mirror symmetry ``x -> -x`` (``V`` along ``x``) the force has no component
-    across ``V``.  Limits: ``f = 1, tau = 0`` for pure sliding and ``f = 0, tau = 2/3`` for
-    pure spin (the classic results); the coupled case by quadrature (Gauss-Legendre in
-    ``rho``, midpoint in the angle), as in Farkas et al., PRL 90, 248302 (2003).
-
-    Examples
-    --------
-    >>> flat_friction(1.0, 0.0), [round(x, 6) for x in flat_friction(0.0, 1.0)]
-    ((1.0, 0.0), [0.0, 0.666667])
-    """
-    v = check_real("speed", speed, low=0.0)
-    om = check_real("spin", spin, low=0.0)
-    if om == 0.0:
-        return (1.0 if v > 0.0 else 0.0), 0.0
-    if v == 0.0:
-        return 0.0, 2.0 / 3.0
-    wx = v - om * _RR * np.sin(_PP)
-    wy = om * _RR * np.cos(_PP)
-    n = np.hypot(wx, wy)
-    n[n == 0.0] = 1.0
-    f = float(np.sum(_WW * wx / n))
-    tau = float(np.sum(_WW * (om * _RR * _RR - v * _RR * np.sin(_PP)) / n))
-    return f, tau
-
-
-def _flat_run(mu, speed, spin, t0, t1):
-    """Integrate ``dV/dt = -mu f``, ``k2 dOmega/dt = -mu tau`` from ``(speed, spin)`` until
-    both vanish or ``t1``; returns ``t, V, Omega, D, distance, angle``."""
-    from scipy.integrate import solve_ivp
-
-    if mu == 0.0 or (speed == 0.0 and spin == 0.0):
-        T = t1 - t0 if mu == 0.0 else 0.0
-        t = np.array([t0, t0 + T])
-        return (t, np.array([speed, speed]), np.array([spin, spin]), np.zeros(2),
-                speed * T, spin * T)
-
-    def rhs(t, z):
-        v, om = max(z[0], 0.0), max(z[1], 0.0)
-        f, tau = flat_friction(v, om)
-        return [-mu * f, -mu * tau / K2, mu * (f * v + tau * om), v, om]
-
-    def stop_v(t, z):
-        return z[0]
-
-    def stop_w(t, z):
-        return z[1]
-
-    stop_v.terminal = stop_w.terminal = True
-    stop_v.direction = stop_w.direction = -1
-    events = [e for e, x in ((stop_v, speed), (stop_w, spin)) if x > 0.0]
-    z0 = [speed, spin, 0.0, 0.0, 0.0]
-    if speed == 0.0 or spin == 0.0:  # the classic closed forms: f = 1 or tau = 2/3
-        rate = mu if spin == 0.0 else mu * (2.0 / 3.0) / K2
-        x0 = speed if spin == 0.0 else spin
-        T = min(x0 / rate, t1 - t0)
-        ts = np.linspace(0.0, T, 9)
-        x = x0 - rate * ts
-        scale = 1.0 if spin == 0.0 else K2
-        D = 0.5 * scale * (x0 * x0 - x * x)
-        dist = x0 * T - 0.5 * rate * T * T
-        zero = np.zeros_like(ts)
-        return (t0 + ts, x if spin == 0.0 else zero, zero if spin == 0.0 else x, D,
-                dist if spin == 0.0 else 0.0, 0.0 if spin == 0.0 else dist)
-    sol = solve_ivp(rhs, (t0, t1), z0, method="DOP853", rtol=1e-10, atol=1e-13,
-                    events=events)
-    t, Z = sol.t, sol.y
-    V, W, D = np.maximum(Z[0], 0.0), np.maximum(Z[1], 0.0), Z[2].copy()
-    if sol.status != 1:
-        return t, V, W, D, Z[3, -1], Z[4, -1]
-    # one of them vanished (to rounding); on that invariant line the other ends by its
-    # closed form (f = 1 or tau = 2/3); the rounding remainder counts as dissipated
-    v_hit = events[0] is stop_v and sol.t_events[0].size > 0
-    if v_hit:
-        D[-1] += 0.5 * Z[0, -1] ** 2
-        V[-1] = 0.0
-        x0, rate, scale = W[-1], mu * (2.0 / 3.0) / K2, K2
-    else:
-        D[-1] += 0.5 * K2 * Z[1, -1] ** 2
-        W[-1] = 0.0
-        x0, rate, scale = V[-1], mu, 1.0
-    T = min(x0 / rate, t1 - t[-1])
-    x = max(x0 - rate * T, 0.0) if T < t1 - t[-1] else x0 - rate * T
-    more = x0 * T - 0.5 * rate * T * T
-    t = np.append(t, t[-1] + T)
-    V = np.append(V, 0.0 if v_hit else x)
-    W = np.append(W, x if v_hit else 0.0)
-    D = np.append(D, D[-1] + 0.5 * scale * (x0 * x0 - x * x))
-    if T >= x0 / rate:
-        V[-1] = W[-1] = 0.0
-    return (t, V, W, D, Z[3, -1] + (0.0 if v_hit else more),
-            Z[4, -1] + (more if v_hit else 0.0))
 
 
 def _face_impact(h, s):
@@ -883,7 +761,7 @@ class _Motion:
         self._enter(t, "flat")
         V = math.hypot(flat[6], flat[7])
         d = (flat[6] / V, flat[7] / V) if V > 0.0 else (1.0, 0.0)
-        ts, Vs, Ws, Ds, dist, ang = _flat_run(self.ground.mu_k, V, abs(spin), t, self.t1)
+        ts, Vs, Ws, Ds, dist, ang = flat_run(self.ground.mu_k, V, abs(spin), t, self.t1)
         end = flat.copy()
         end[0] += d[0] * dist
         end[1] += d[1] * dist

@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+from rollingdisk.phases.columns import flat_states as _flat_states
 from rollingdisk.phases.line_contact import MODE_NAMES as LINE_MODES
 from rollingdisk.phases.line_contact import LineSegment
 from rollingdisk.phases.motion import FlatSegment, FlightSegment, MotionResult
@@ -70,30 +71,6 @@ def _segment_of(result: MotionResult, tf: np.ndarray) -> np.ndarray:
     j = np.clip(np.searchsorted(starts, tf, side="right") - 1, 0, None)
     end = _span(result.segments[-1])[1]
     return np.where(tf >= end, -1, j)
-
-
-def _flat_fraction(seg: FlatSegment, t: np.ndarray, rate: np.ndarray) -> np.ndarray:
-    """Share of the segment's whole travel (distance or turn) done by time ``t``: the
-    integral of the piecewise-linear ``rate`` over ``seg.t``, exact between samples."""
-    ts = np.asarray(seg.t, float)
-    cum = np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * np.diff(ts))])
-    if cum[-1] <= 0.0:
-        return np.zeros_like(t)
-    j = np.clip(np.searchsorted(ts, t, side="right") - 1, 0, ts.size - 2)
-    r = np.interp(t, ts, rate)
-    return np.clip((cum[j] + 0.5 * (rate[j] + r) * (t - ts[j])) / cum[-1], 0.0, 1.0)
-
-
-def _flat_states(seg: FlatSegment, t: np.ndarray) -> np.ndarray:
-    """Free states (rows) of a flat disk at times ``t``: C moves on the straight line from
-    ``state0`` to ``state1`` by the integral of the speed, psi turns by that of the spin."""
-    fv = _flat_fraction(seg, t, np.asarray(seg.speed, float))
-    fw = _flat_fraction(seg, t, np.asarray(seg.spin, float))
-    s0, s1 = np.asarray(seg.state0, float), np.asarray(seg.state1, float)
-    out = np.repeat(s0[None, :], t.size, axis=0)
-    out[:, 0:2] = s0[0:2] + fv[:, None] * (s1[0:2] - s0[0:2])
-    out[:, 3] = s0[3] + fw * (s1[3] - s0[3])
-    return out
 
 
 def _flight_states(seg: FlightSegment, t: np.ndarray) -> np.ndarray:

@@ -34,29 +34,45 @@ __all__ = ["TOSS_OUTCOMES", "TossResult", "toss", "TossDistribution", "EnsembleR
 TOSS_OUTCOMES = ("heads", "tails", "edge", "undecided")
 
 
-def energy_barrier(h: float) -> float:
-    """``sqrt(1 + h^2)`` [``m g a``]: the height of the centre when the disk balances on a
-    rim edge with its centre straight above it (``theta = +-arctan h``).
+def energy_barrier(h: float, rolling_resistance: float = 0.0) -> float:
+    """The least energy [``m g a``] at which the disk can stand still on a rim edge:
+    ``sqrt(1 + h^2 - c^2)`` with the rolling resistance ``c`` (``sqrt(1 + h^2)`` without
+    it, the height of the centre when the disk balances on a rim edge with its centre
+    straight above it, ``theta = +-arctan h``).
 
-    Below this energy the disk can never again pass ``|theta| = arctan h``: its lowest
-    point's height ``Z_C - sqrt(1 - eta_Z^2) - h |eta_Z|`` is at least 0 and ``Z_C <= E``,
-    while ``sqrt(1 - eta_Z^2) + h |eta_Z|`` reaches ``sqrt(1 + h^2)`` at
-    ``|eta_Z| = h/sqrt(1 + h^2)``; the energy never grows (impacts, friction).
+    Below this energy the outcome is decided: touching a rim edge the centre's height is
+    ``Z_C = sqrt(1 + h^2) cos(|theta| - arctan h)`` (eq. 7), and the energy ``E >= Z_C``
+    never grows (impacts, friction), so the disk can never again reach the tilts where
+    ``Z_C >= E``; those include the balance tilt (it cannot cross from one side to the
+    other) and every tilt where rolling resistance can hold it still (the arm of gravity
+    about the edge, ``sqrt(1 + h^2) |sin(|theta| - arctan h)|``, at most ``c``, so ``Z_C >=
+    sqrt(1 + h^2 - c^2)``): it cannot come to rest on the edge.
+
+    Parameters
+    ----------
+    h : float
+        Half-thickness [``a``], ``>= 0``.
+    rolling_resistance : float
+        Rolling-resistance length ``c`` of the ground [``a``], in ``[0, sqrt(1 + h^2))``
+        (a ground that holds the disk at every tilt has no such energy).
     """
     h = check_real("h", h, low=0.0)
-    return math.sqrt(1.0 + h * h)
+    top = 1.0 + h * h
+    c = check_real("rolling_resistance", rolling_resistance, low=0.0, high=math.sqrt(top),
+                   high_open=True)
+    return math.sqrt(top - c * c)
 
 
-def _trap(h):
-    Eb = energy_barrier(h)
-    s_b = h / Eb  # sin(arctan h)
+def _trap(h, c_roll=0.0):
+    Eb = energy_barrier(h, c_roll)
+    s_b = h / math.sqrt(1.0 + h * h)  # sin(arctan h): the balance tilt
 
     def decide(E, s):
         if E >= Eb * (1.0 - 1e-12):
             return None
         ez = math.sin(s[4])  # eta_Z
         side = "heads" if ez > s_b else "tails" if ez < -s_b else "edge"
-        return f"energy {E:.9g} below the barrier sqrt(1 + h^2) = {Eb:.9g}: {side}"
+        return f"energy {E:.9g} below the barrier sqrt(1 + h^2 - c^2) = {Eb:.9g}: {side}"
     return decide
 
 
@@ -182,7 +198,9 @@ def toss(disk: Disk, height: float, velocity: float, spin: float, tilt: float = 
     s0 = [0.0, 0.0, height, 0.0, tilt, 0.0, vx, 0.0, v, w1, w2, w3]
     c_roll = check_real("rolling_resistance", rolling_resistance, low=0.0)
     res = simulate_to_rest(disk, Coulomb(mu, rolling_resistance=c_roll), (0.0, t_end), s0,
-                           e=e, mu_impact=mu, decide=_trap(h) if early else None,
+                           e=e, mu_impact=mu,
+                           decide=_trap(h, c_roll) if early and c_roll ** 2 < 1.0 + h * h
+                           else None,
                            chunk=1.0, max_wall=max_wall, rtol=rtol, atol=atol,
                            max_steps=20_000, max_transitions=TOSS_MAX_TRANSITIONS)
     out, by = _classify(h, res)
