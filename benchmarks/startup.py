@@ -162,7 +162,7 @@ def main(argv=None) -> int:
     user = json.loads(outputs["user scipy script"])
     result = {
         "benchmark": "startup",
-        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d"),
+        "date": datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d"),
         "machine": {"cpus": os.cpu_count(), "python": platform.python_version(),
                     "platform": platform.platform()},
         "rounds": args.rounds,
