@@ -76,15 +76,15 @@ def test_short_simulate_needs_neither_compiler_nor_scipy_integrate(tmp_path):
 
 
 def test_small_sweep_writes_its_store_without_dask_array(tmp_path):
-    """The sweep needs numba (its kernel), xarray and zarr (its store), but not dask's
-    arrays: rollingdisk.results.xrload defers xarray's duck-array check of dask."""
+    """The sweep needs numba (its kernel), xarray and zarr (its store), but not dask:
+    rollingdisk.results.xrload defers xarray's duck-array checks of dask and pint."""
     out = tmp_path / "s.zarr"
     mods, subs, res = _loaded(tmp_path, [
         "sweep", "--ground", "rough", "--h", "0.17", "--theta0", "0.3:1.2:2",
         "--omega30", "2:6:2", "--t-end", "1", "--out", str(out), "--json"])
     assert json.loads(res.stdout)["n"] == 4
     assert {"xarray", "zarr"} <= mods
-    assert "dask.array" not in subs and not {"matplotlib", "sympy"} & mods
+    assert not {"dask", "pint", "matplotlib", "sympy"} & mods
 
 
 def test_deferred_dask_entry_answers_as_xarray_once_dask_array_is_imported(tmp_path):
@@ -101,7 +101,15 @@ def test_deferred_dask_entry_answers_as_xarray_once_dask_array_is_imported(tmp_p
         "assert array_type('dask') == (da.Array,)\n"
         "a = xr.DataArray(da.arange(6, chunks=2), dims='x')\n"
         "assert a.chunks == ((2, 2, 2),)\n"
-        "assert (a * 2).sum().compute().item() == 30\n")
+        "assert (a * 2).sum().compute().item() == 30\n"
+        "from xarray.namedarray.utils import is_duck_dask_array\n"
+        "assert is_duck_dask_array(a.data) and not is_duck_dask_array(np.ones(2))\n"
+        "try:\n"
+        "    import pint\n"
+        "except ImportError:\n"
+        "    pint = None\n"
+        "if pint is not None:\n"
+        "    assert array_type('pint') == (pint.Quantity,)\n")
     res = subprocess.run([sys.executable, "-c", code], env=_env(tmp_path), cwd=tmp_path,
                          capture_output=True, text=True, timeout=300)
     assert res.returncode == 0, res.stderr[-2000:]
