@@ -41,13 +41,14 @@ def _met(value: float, target: float) -> str:
 
 def render_readme(d: dict) -> str:
     """The README's paragraph (between the markers, markers included)."""
-    b, r = d["best_s"], d["ratios"]
+    b, r, m = d["best_s"], d["ratios"], d["median_s"]
     text = (
         f"Start-up (`benchmarks/startup.py`, {d['machine']['cpus']}-core machine, "
         f"{d['date']}, whole processes, best of {d['rounds']} interleaved rounds): "
         f"`{SIMULATE}` takes {b['simulate (warm)']:.2f} s, "
         f"{r['simulate_warm_over_script']:.2f}× a user's own `solve_ivp` script for the same "
-        f"motion ({b['user scipy script']:.2f} s; the target is 0.75×), and "
+        f"motion ({b['user scipy script']:.2f} s; the target is 0.75×; "
+        f"{m['simulate (warm)'] / m['user scipy script']:.2f}× by the medians), and "
         f"{b['simulate (cold)']:.2f} s ({r['simulate_cold_over_script']:.2f}×) with an empty "
         f"compile cache: a short run imports neither numba nor scipy's integrators. A 10 × 10 "
         f"`rollingdisk sweep` takes {d['sweep_10x10_warm_s']:.2f} s warm (target 0.8 s). "
@@ -72,7 +73,9 @@ def render_docs(d: dict) -> str:
     """docs/performance.md, whole."""
     b, r, t = d["best_s"], d["ratios"], d["targets"]
     script = b["user scipy script"]
-    rows = "\n".join(f"| {k} | {v:.3f} | {v / script:.2f} |" for k, v in b.items())
+    med = d["median_s"]
+    rows = "\n".join(f"| {k} | {v:.3f} | {v / script:.2f} | {med[k]:.3f} | "
+                     f"{med[k] / med['user scipy script']:.2f} |" for k, v in b.items())
     imports = "\n".join(
         f"| `{k}` | " + (", ".join(f"{m} {s:.2f}" for m, s in v.items()) or "none") + " |"
         for k, v in d["imports_s"].items())
@@ -93,8 +96,8 @@ the same motion (`solve_ivp(method="DOP853")` at simulate's default tolerances:
 {d['steps']['user scipy script']} steps; the command takes {d['steps']['simulate']} steps
 with `{d['steps']['simulate_method']}`, its step bounded for the frequency it measures).
 
-| case | best wall time [s] | × the user's script |
-|---|---|---|
+| case | best wall time [s] | × the user's script | median [s] | × (medians) |
+|---|---|---|---|---|
 {rows}
 
 {base}| target | measured | |

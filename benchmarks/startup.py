@@ -26,7 +26,8 @@ Writes everything as JSON to ``--json`` (default ``benchmarks/results/startup.js
 ignored by git); ``python benchmarks/report.py`` turns it into the README's numbers and
 docs/performance.md.
 
-Run:  python benchmarks/startup.py [--rounds 7] [--json PATH] [--baseline SRC]
+Run:  python benchmarks/startup.py [--rounds 7] [--json PATH] [--baseline SRC
+      --baseline-name NAME]
 """
 
 from __future__ import annotations
@@ -36,6 +37,7 @@ import datetime
 import json
 import os
 import platform
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -129,6 +131,8 @@ def main(argv=None) -> int:
     ap.add_argument("--baseline", type=Path, default=None, metavar="SRC",
                     help="another tree's src folder (e.g. a checkout of main): its commands "
                     "run interleaved with these, labelled [baseline]")
+    ap.add_argument("--baseline-name", default=None,
+                    help="what the baseline tree is, for the report (e.g. 'main at 619e14f')")
     args = ap.parse_args(argv)
     with tempfile.TemporaryDirectory() as t:
         tmp = Path(t)
@@ -167,6 +171,7 @@ def main(argv=None) -> int:
                     "platform": platform.platform()},
         "rounds": args.rounds,
         "best_s": {k: round(v, 4) for k, v in best.items()},
+        "median_s": {k: round(statistics.median(v), 4) for k, v in walls.items()},
         "all_s": {k: [round(x, 4) for x in v] for k, v in walls.items()},
         "ratios": {
             "simulate_warm_over_script": round(best["simulate (warm)"] / script, 3),
@@ -174,7 +179,8 @@ def main(argv=None) -> int:
             "sweep_10x10_over_script": round(best["sweep 10x10 (warm)"] / script, 3),
         },
         "sweep_10x10_warm_s": round(best["sweep 10x10 (warm)"], 3),
-        "baseline": None if args.baseline is None else str(args.baseline),
+        "baseline": None if args.baseline is None else (args.baseline_name or
+                                                        str(args.baseline)),
         "targets": TARGETS,
         "steps": {"simulate": sim["n_steps"], "simulate_method": sim["method"],
                   "user scipy script": user["n_steps"]},
