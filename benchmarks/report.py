@@ -118,7 +118,7 @@ Heavy packages each command imports (`python -X importtime`, cumulative seconds)
 {imports}
 
 {DATA_BEGIN}
-{json.dumps(d, indent=1, sort_keys=True)}
+{json.dumps(d, indent=1)}
 {DATA_END}
 """
 
