@@ -12,14 +12,19 @@ single-threaded worker process per core) against the plain multi-core run; heyok
 (SIMD) mode on the same job where heyoka is installed.  Timings on a shared machine are
 noisy: run it alone for figures to quote.
 
-Run: PYTHONPATH=src python benchmarks/sweep.py [N]   (N = 16384 by default: with few
-trajectories Dask's fixed cost per run dominates)
+Writes the figures as JSON to ``--json`` (default ``benchmarks/results/sweep.json``, ignored
+by git).
+
+Run: PYTHONPATH=src python benchmarks/sweep.py [N] [--json PATH]   (N = 16384 by default:
+with few trajectories Dask's fixed cost per run dominates)
 """
 
+import argparse
+import json
 import math
 import os
-import sys
 import time
+from pathlib import Path
 
 import numpy as np
 
@@ -147,7 +152,13 @@ def _warm_worker():
 
 
 def main():
-    n = int(sys.argv[1]) if len(sys.argv) > 1 else 16384
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("n", nargs="?", type=int, default=16384)
+    ap.add_argument("--json", type=Path, default=Path(__file__).resolve().parent / "results" /
+                    "sweep.json")
+    args = ap.parse_args()
+    n = args.n
+    fig = {"benchmark": "sweep", "cpus": os.cpu_count(), "t_end": T, "tol": TOL}
     g = grid(n)
     pert = Perturbation(kick=KICK)
     ncores = os.cpu_count() or 1
@@ -163,12 +174,15 @@ def main():
                                                                        "stable_simulated"))
     dsm, tm = timed(lambda: run_sweep(g, T, executor="threads", workers=ncores, **kw))
     rm = n / tm
+    fig.update(n=n, sweep_per_s_1_thread=r1, dop853_per_s_1_thread=r8, threads_per_s=rm,
+               same_verdicts_dop853=bool(same))
     print(f"trajectories: {n}, T = {T}, rtol = atol = {TOL}, cores: {ncores}")
     print(f"sweep, 1 thread:          {r1:9.0f} traj/s/core  (Taylor, "
           f"{np.nanmean(ds1.n_steps.values):.0f} steps/trajectory)")
     print(f"  method='dop853':        {r8:9.0f} traj/s/core  (Taylor is {r1 / r8:.2f}x; "
           f"{np.nanmean(dsd8.n_steps.values):.0f} steps; same status/stability: {same})")
     rs = scipy_baseline(g, 40)
+    fig.update(scipy_per_s=rs, sweep_over_scipy=r1 / rs)
     print(f"scipy solve_ivp baseline: {rs:9.1f} traj/s/core  (sweep is {r1 / rs:.0f}x)")
     print(f"sweep, {ncores} threads:         {rm:9.0f} traj/s  speed-up {rm / r1:.2f}x"
           f" (identical: {all((ds1[k].values.tobytes() == dsm[k].values.tobytes()) for k in ds1)})")
@@ -184,6 +198,7 @@ def main():
                 dsd, td = timed(lambda: run_sweep(g, T, executor="dask", dask_address=addr,
                                                   **kw))
         rd_ = n / td
+        fig.update(dask_per_s=rd_, dask_over_threads=rd_ / rm)
         same = all(ds1[k].values.tobytes() == dsd[k].values.tobytes() for k in ds1)
         print(f"dask, {ncores} workers:          {rd_:9.0f} traj/s  efficiency vs threads "
               f"{rd_ / rm:.0%} (identical: {same})")
@@ -193,6 +208,9 @@ def main():
 
     run_heyoka, note = heyoka_batch(g, n)
     rsc, rln, same, rh = lanes_vs_scalar(g, pert, run_heyoka)
+    fig.update(lanes_per_s=rln, scalar_per_s=rsc, lanes_same_verdicts=bool(same),
+               heyoka_batch_per_s=rh or None,
+               lanes_over_heyoka=rln / rh if rh else None, heyoka=note)
     print(f"kernel alone, 1 thread:   {rln:9.0f} traj/s/core in {LANES} "
           f"lanes, {rsc:.0f} one at a time ({rln / rsc:.2f}x; same verdicts: {same})")
     if run_heyoka is None:
@@ -201,6 +219,9 @@ def main():
         print(f"heyoka batch mode:        {rh:9.0f} traj/s/core ({note}; best of 3, in turn "
               f"with the lanes kernel)  lanes kernel/heyoka {rln / rh:.2f}, "
               f"sweep/heyoka {r1 / rh:.2f}")
+    args.json.parent.mkdir(parents=True, exist_ok=True)
+    args.json.write_text(json.dumps(fig, indent=2) + "\n")
+    print(f"wrote {args.json}")
 
 
 if __name__ == "__main__":

@@ -170,7 +170,7 @@ sys.exit(rollingdisk_cli.main(["thresholds", "--h", "0.2"]))
 
 
 @pytest.mark.parametrize("module, where", [("numpy", "while the package is imported"),
-                                           ("rollingdisk.plotting.figures",
+                                           ("rollingdisk.cli._format",
                                             "while the parser is built")])
 @pytest.mark.parametrize("sig, code, word", [("SIGINT", 130, "interrupted"),
                                              ("SIGTERM", 143, "terminated")])

@@ -134,14 +134,11 @@ def _command_module(name: str, module: str):
         raise
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(only: str | None = None) -> argparse.ArgumentParser:
     """The parser of the ``rollingdisk`` command line (one subparser per command of
-    :data:`COMMANDS`; ``args.handler`` is the command's ``run``).
-
-    Returns
-    -------
-    argparse.ArgumentParser
-    """
+    :data:`COMMANDS`; ``args.handler`` is the command's ``run``); with ``only`` (a command's
+    name) that command's alone, so that no other command's module is imported (``main``
+    does so when the first argument names a command)."""
     parser = _Parser(prog="rollingdisk", description="Dynamics of a rigid disk of finite "
                      "thickness on a horizontal plane (after M. Batista): steady motions, "
                      "stability, simulations, maps.")
@@ -149,7 +146,7 @@ def build_parser() -> argparse.ArgumentParser:
                         help="print the version of rollingdisk and exit")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     for name, module, text in COMMANDS:
-        mod = _command_module(name, module)
+        mod = _command_module(name, module) if only in (None, name) else None
         if mod is None:
             continue
         adder = _Subparsers(sub, text)
@@ -178,7 +175,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         with terminate_as_exception():  # first: a signal while the parser is built counts
             quiet_forked_children()  # helpers start with no handler of ours (atlas)
-            parser = build_parser()
+            first = next(iter(sys.argv[1:] if argv is None else argv), None)
+            parser = build_parser(first if first in {c[0] for c in COMMANDS} else None)
             try:
                 args = parser.parse_args(argv)
             except _Exit as done:  # --help, --version

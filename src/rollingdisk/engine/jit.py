@@ -1,7 +1,8 @@
 """When the compiled integrator is worth loading, and which method ``"auto"`` runs.
 
-Loading the numba integrator costs about 0.5 s (``import numba`` and the cached machine
-code), compiling it with an empty cache 10-50 s once per machine; the same integrator run
+Loading the numba integrator costs about 1 s on a 2-core machine (``import numba`` 0.3 s,
+numba's own set-up and the cached machine code 0.8-1.0 s), compiling it with an empty
+cache 10-60 s once per machine; the same integrator run
 uncompiled (:mod:`rollingdisk.engine.pycore`) takes 30-65 times as long per step as
 compiled.  The rule (the one place it is written; docs/simulation.md quotes it):
 
@@ -50,7 +51,7 @@ from pathlib import Path
 import numpy as np
 
 #: Uncompiled DOP853 steps, in total over the runs of the process, after which the
-#: compiled code is loaded (about a second of uncompiled stepping, twice a warm load).
+#: compiled code is loaded (one to two seconds of uncompiled stepping, about a warm load).
 PY_BUDGET = 8_000
 
 #: Uncompiled steps still ahead of a run (projected from the part of its span done) beyond

@@ -126,7 +126,7 @@ class _Bisection:
         self.trial = 0.5 * (self.lo + self.hi)
 
     def dataset(self):
-        import xarray as xr
+        from rollingdisk.results.xrload import xr
 
         st = self.first["stable"]
         dims = self.grid.dims

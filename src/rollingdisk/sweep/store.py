@@ -228,7 +228,7 @@ def build_dataset(spec: _Spec, cols: dict, executor: str, n_computed: int):
     """The sweep's ``xarray.Dataset`` from its concatenated columns, described."""
     from importlib.metadata import version
 
-    import xarray as xr
+    from rollingdisk.results.xrload import xr
 
     g = spec.grid
     p = spec.perturbation
@@ -273,7 +273,7 @@ def save(ds, out: Path) -> None:
 
 def open_sweep(path):
     """Open a finished sweep store (``.zarr`` or ``.nc``) as an ``xarray.Dataset``."""
-    import xarray as xr
+    from rollingdisk.results.xrload import xr
 
     path = Path(os.fspath(path))
     try:
