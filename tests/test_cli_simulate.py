@@ -214,10 +214,13 @@ def test_simulate_out_streams_the_same_csv_as_the_trajectory(tmp_path, capsys):
     from rollingdisk import simulate_steady, stability, steady_motion
 
     m = steady_motion(Disk(h=0.1), "rough", 0.3, Omega0=3.0)
-    # a steady start: the CLI steps at most 1/20 of 1/|varpi| (for the measured frequency)
-    tr = simulate_steady(m, 5.0, method="dop853",
-                         max_step=0.05 / math.sqrt(abs(stability(m).varpi2)))
-    assert np.array_equal(rows[:, 0], tr.t)
+    # a steady start: the CLI samples the dense output every 1/20 of 1/|varpi| (for the
+    # measured frequency) and at t_end
+    dt = 0.05 / math.sqrt(abs(stability(m).varpi2))
+    t_eval = np.append(np.arange(0.0, 5.0, dt), 5.0)
+    tr = simulate_steady(m, 5.0, method="dop853", t_eval=t_eval)
+    assert np.array_equal(rows[:, 0], tr.t) and np.array_equal(rows[:, 0], t_eval)
+    assert np.array_equal(rows[:, 4], tr.theta)
     assert oct(path.stat().st_mode & 0o777) == oct(0o666 & ~_umask())
 
 
