@@ -279,7 +279,7 @@ def test_no_private_name_imported_across_subpackages():
 
 #: What is left is imported by the Coulomb loop (ivp/hybrid.py, ivp/fastsegment.py) and
 #: phases/impact.py: the model's kernels and the root finder under their private names.
-PRIVATE_CROSSINGS = 8
+PRIVATE_CROSSINGS = 7
 
 
 def test_no_package_name_is_also_one_of_its_submodules():

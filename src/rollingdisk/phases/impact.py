@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rollingdisk.model.disk import Disk, check_ground
-from rollingdisk.model.geometry import _inertia
+from rollingdisk.model.geometry import inertia
 from rollingdisk.model.state import state_index, state_names
 from rollingdisk.util.checks import check_real, check_sign, real_array
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
@@ -132,7 +132,7 @@ def _flight_constants(h, s):
     """Space-fixed quantities of the torque-free motion: ``L`` (angular momentum about C,
     OXYZ), the precession rate ``Omega_p = |L|/k1^2`` about ``L`` and the body spin rate
     ``nu = (k1^2 - k2^2)/k1^2 omega2`` about the axis."""
-    k1, k2 = _inertia(h)
+    k1, k2 = inertia(h)
     psi, theta = s[3], s[4]
     w = s[9:12]
     Q = _frame(psi, theta)
@@ -149,7 +149,7 @@ def _flight_one(h, s, t):
     psi, theta, phi = _angles(R, psi0, theta0, phi0)
     Q = _frame(psi, theta)
     # omega in space: Omega_p L^ + nu eta (the symmetric top), then in C xi eta zeta
-    k1, _ = _inertia(h)
+    k1, _ = inertia(h)
     w_space = L / k1 + nu * R[:, 1]
     w = Q.T @ w_space
     X = s[0:3] + s[6:9] * t + np.array([0.0, 0.0, -0.5 * t * t])
@@ -201,7 +201,7 @@ def free_energy(disk: Disk, state) -> float:
     """Total energy of a free body, units ``m g a``: ``|V|^2/2 + omega.J omega/2 + Z_C``."""
     h = _check_disk(disk).h
     s = _as_free_state(state)
-    k1, k2 = _inertia(h)
+    k1, k2 = inertia(h)
     w1, w2, w3 = s[9:12]
     return float(0.5 * s[6:9] @ s[6:9] + 0.5 * (k1 * (w1 * w1 + w3 * w3) + k2 * w2 * w2)
                  + s[2])
@@ -385,7 +385,7 @@ def touchdown_time(disk: Disk, state, *, inside_tol: float = 1e-12) -> float:
 # ------------------------------------------------------------------------- impacts
 def _jacobian_parts(h, theta, r):
     """``J^-1`` (Cxyz) and the cross matrix ``[r]`` of ``r``."""
-    k1, k2 = _inertia(h)
+    k1, k2 = inertia(h)
     Qx = _rot_x(theta)  # columns xi, eta, zeta in Cxyz
     Jinv = Qx @ np.diag([1.0 / k1, 1.0 / k2, 1.0 / k1]) @ Qx.T
     rx, ry, rz = r
@@ -582,7 +582,7 @@ def _contact_of(h, s, contact):
 
 def _impact(h, s, r, e_n, e_t, mu, mode_tol):
     psi, theta = s[3], s[4]
-    k1, k2 = _inertia(h)
+    k1, k2 = inertia(h)
     Rz = _rot_z(psi)
     Qx = _rot_x(theta)
     V = Rz.T @ s[6:9]  # Cxyz
