@@ -28,21 +28,21 @@ def _label_2_5(x, pos=None) -> str:
     c = x / 10.0 ** e
     if abs(c - round(c)) > 1e-6 or round(c) not in (2, 5):
         return ""
-    return rf"${round(c)}\times10^{{{e}}}$"
+    return rf"$\mathdefault{{{round(c)}\times10^{{{e}}}}}$"
 
 
 def _sparse_log_labels(ax) -> None:
     """Minor tick labels on the log axes of ``ax`` that cannot overlap: none where an axis
-    spans two decades or more (its decades are labelled), else at 2 and 5 times a power of
-    ten only (matplotlib's default labels 2, 3, 4, 6 times a power of ten on an axis that
-    holds one power of ten, and they collide)."""
+    shows two powers of ten or more (they are labelled), else at 2 and 5 times a power of
+    ten only (matplotlib's default labels 2, 3, 4 and 6 times a power of ten on an axis that
+    shows one power of ten, and they collide)."""
     from matplotlib.ticker import FuncFormatter, NullFormatter
 
     for axis, lim in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
-        if axis.get_scale() != "log":
-            continue
         lo, hi = sorted(lim)
-        if lo > 0 and hi / lo >= 100.0:
+        if axis.get_scale() != "log" or not lo > 0:
+            continue
+        if math.floor(math.log10(hi)) - math.ceil(math.log10(lo)) >= 1:
             axis.set_minor_formatter(NullFormatter())
         else:
             axis.set_minor_formatter(FuncFormatter(_label_2_5))
