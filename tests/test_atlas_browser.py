@@ -1,14 +1,18 @@
 """The atlas page in a real browser: Debian's headless Chromium driven by Selenium.
 
-A quick atlas (``build_atlas(0.17, tmp, quick=True)``) is opened from disk.  Sources of
-truth are the browser's own layout: the table of contents links to ids that exist on the
-page; at a phone's width (420 px) nothing overflows horizontally and the body text computes
-to at least 14 px; every image decoded (``naturalWidth > 0``); the viewport meta tag is
-there.  Nothing is downloaded: the driver and the browser are the system's
-(/usr/bin/chromedriver, /usr/bin/chromium); selenium-manager is never asked for them.
-Skipped where either is missing or selenium is not installed (the ``browser`` extra).
+A quick atlas (``build_atlas(0.17, tmp, quick=True)``, and of a 1-euro coin) is opened from
+disk.  Sources of truth are the browser's own layout: the table of contents links to ids
+that exist on the page; at a phone's width (420 px) nothing overflows horizontally and the
+body text computes to at least 14 px; every image decoded (``naturalWidth > 0``); the
+viewport meta tag is there; at a laptop's 1280 x 800 the coin atlas's first screen, without
+scrolling, names the coin and shows 0.197 m/s, and every request the browser makes (its
+DevTools log) is for a file of the atlas.  Nothing is downloaded: the driver and the
+browser are the system's (/usr/bin/chromedriver, /usr/bin/chromium); selenium-manager is
+never asked for them.  Skipped where either is missing or selenium is not installed (the
+``browser`` extra).
 
-Set ``ROLLINGDISK_ATLAS_SCREENSHOTS=DIR`` to keep screenshots at 1200 px and 420 px.
+Set ``ROLLINGDISK_ATLAS_SCREENSHOTS=DIR`` to keep screenshots at 1200 px and 420 px, and the
+coin atlas's first screen (``atlas_coin_1280x800.png`` and its text).
 """
 
 from __future__ import annotations
