@@ -179,3 +179,21 @@ def test_euler_disk_log_log_tick_labels_do_not_overlap(lo, hi):
     labelled = [t.get_loc() for t in ax.xaxis.get_major_ticks() + ax.xaxis.get_minor_ticks()
                 if lo <= t.get_loc() <= hi and t.label1.get_text()]
     assert labelled or hi / lo < 2.0  # an axis of some extent keeps a label
+
+
+def test_a_disk_without_mass_says_what_it_needs(tmp_path):
+    """A disk with a size but no mass: the answers name the missing mass and the Euler's
+    disk section stays the commercial toy; the run to rest is still this disk's."""
+    from rollingdisk.atlas.page import _answers, _ran_as_euler_disk
+    from rollingdisk.atlas.steps import _to_rest_section
+
+    disk = rd.disk_from_options(radius="2cm", thickness="3mm")
+    thr = rd.thresholds(disk).as_dict()
+    toy = {"parameters": {"radius_m": 0.0375, "mass_kg": 0.45}}
+    rest = _to_rest_section(tmp_path, True, [], disk)
+    assert rest["h"] == pytest.approx(0.003 / 0.04, rel=1e-12)
+    text = _text(_answers(disk, thr, {"euler_disk": toy, "to_rest": rest}))
+    assert text.startswith("This disk, at a glance")
+    v = math.sqrt(eq42(0.075) * G * 0.02)
+    assert f"above {v:.3g} m/s" in text and "needs its mass" in text
+    assert _ran_as_euler_disk(disk, {"euler_disk": toy}) is None  # the section: the toy
