@@ -1,18 +1,23 @@
 """The atlas page in a real browser: Debian's headless Chromium driven by Selenium.
 
-A quick atlas (``build_atlas(0.17, tmp, quick=True)``) is opened from disk.  Sources of
-truth are the browser's own layout: the table of contents links to ids that exist on the
-page; at a phone's width (420 px) nothing overflows horizontally and the body text computes
-to at least 14 px; every image decoded (``naturalWidth > 0``); the viewport meta tag is
-there.  Nothing is downloaded: the driver and the browser are the system's
-(/usr/bin/chromedriver, /usr/bin/chromium); selenium-manager is never asked for them.
-Skipped where either is missing or selenium is not installed (the ``browser`` extra).
+A quick atlas (``build_atlas(0.17, tmp, quick=True)``, and of a 1-euro coin) is opened from
+disk.  Sources of truth are the browser's own layout: the table of contents links to ids
+that exist on the page; at a phone's width (420 px) nothing overflows horizontally and the
+body text computes to at least 14 px; every image decoded (``naturalWidth > 0``); the
+viewport meta tag is there; at a laptop's 1280 x 800 the coin atlas's first screen, without
+scrolling, names the coin and shows 0.197 m/s, and every request the browser makes (its
+DevTools log) is for a file of the atlas.  Nothing is downloaded: the driver and the
+browser are the system's (/usr/bin/chromedriver, /usr/bin/chromium); selenium-manager is
+never asked for them.  Skipped where either is missing or selenium is not installed (the
+``browser`` extra).
 
-Set ``ROLLINGDISK_ATLAS_SCREENSHOTS=DIR`` to keep screenshots at 1200 px and 420 px.
+Set ``ROLLINGDISK_ATLAS_SCREENSHOTS=DIR`` to keep screenshots at 1200 px and 420 px, and the
+coin atlas's first screen (``atlas_coin_1280x800.png`` and its text).
 """
 
 from __future__ import annotations
 
+import json
 import os
 import tempfile
 from pathlib import Path
@@ -68,6 +73,8 @@ def driver():
                  "--disable-sync", "--no-first-run", f"--window-size={DESKTOP},900",
                  f"--user-data-dir={profile.name}"):
         options.add_argument(flag)
+    # the DevTools log of every request, read by test_first_screen_of_the_coin_atlas
+    options.set_capability("goog:loggingPrefs", {"performance": "ALL"})
     drv = webdriver.Chrome(service=Service(executable_path=str(CHROMEDRIVER)),
                            options=options)
     try:
@@ -152,3 +159,58 @@ def test_phone_width_no_horizontal_overflow_readable_text(driver, atlas):
         "return Math.max(...[...document.images].map(i => i.getBoundingClientRect().right))")
     assert widest <= inner + 1
     _screenshot(driver, f"atlas_{PHONE}.png")
+
+
+LAPTOP = (1280, 800)
+
+#: The text of the page that lies in the viewport (no scrolling): every text node's
+#: client rectangles that intersect the window, of elements that are rendered.
+_FIRST_SCREEN = """
+const w = window.innerWidth, h = window.innerHeight, out = [];
+const walk = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+for (let n = walk.nextNode(); n; n = walk.nextNode()) {
+  const el = n.parentElement, st = el && getComputedStyle(el);
+  if (!st || st.visibility !== 'visible' || st.display === 'none') continue;
+  const r = document.createRange(); r.selectNodeContents(n);
+  for (const b of r.getClientRects())
+    if (b.width > 0 && b.height > 0 && b.top >= 0 && b.bottom <= h && b.left >= 0
+        && b.right <= w) { out.push(n.textContent); break; }
+}
+return out.join(' ');
+"""
+
+
+def test_first_screen_of_the_coin_atlas(driver, atlas):
+    """At a laptop's 1280 x 800 the first screen names the coin and gives its speed of
+    stable straight rolling, 0.197 m/s; the page asks nothing of the network."""
+    if atlas.disk is None or atlas.disk.radius is None:
+        pytest.skip("the answers lead the atlas of a disk with a size")
+    width, height = LAPTOP
+    driver.set_window_size(width, height)
+    inner = driver.execute_script("return [window.innerWidth, window.innerHeight]")
+    if inner != [width, height]:
+        driver.set_window_size(2 * width - inner[0], 2 * height - inner[1])
+    driver.get_log("performance")  # drop what earlier pages asked for
+    driver.get(atlas.index.as_uri())
+    driver.set_script_timeout(30)
+    driver.execute_async_script(
+        "const done = arguments[arguments.length - 1];"
+        "Promise.all([...document.images].map(i => i.complete ? 0 :"
+        " new Promise(r => { i.onload = i.onerror = r; }))).then(() => done(true));")
+    assert driver.execute_script("return [window.innerWidth, window.innerHeight]") == [
+        width, height]
+    assert driver.execute_script("return window.scrollY") == 0
+    first = " ".join(driver.execute_script(_FIRST_SCREEN).split())
+    _screenshot(driver, "atlas_coin_1280x800.png")
+    keep = os.environ.get("ROLLINGDISK_ATLAS_SCREENSHOTS")
+    if keep:
+        (Path(keep) / "atlas_coin_first_screen.txt").write_text(first, encoding="utf-8")
+    assert "euro" in first and "1-euro coin" in driver.title
+    assert "0.197 m/s" in first
+    # every request the browser made is for a file beside the page: none leaves the machine
+    urls = [e["params"]["request"]["url"] for e in
+            (json.loads(entry["message"])["message"] for entry in driver.get_log("performance"))
+            if e.get("method") == "Network.requestWillBeSent"]
+    assert atlas.index.as_uri() in urls and any(u.endswith(".png") for u in urls), urls
+    for url in urls:
+        assert url.startswith(atlas.out_dir.as_uri() + "/"), url

@@ -18,7 +18,14 @@
   (:mod:`rollingdisk.scenarios.euler_disk`, its own ``h = 0.169``), run to its end with
   creep friction and rolling resistance, with the fitted and the predicted exponents
   (run in a second process alongside the other steps),
-* ``index.html`` showing it all, with relative image paths and no external resources: a
+* a disk let go to rest past the guards (bounces, rocking, falling flat): this disk when it
+  has a size, else a generic thick disk (``h = 0.3``, :data:`.steps.TO_REST`),
+* ``index.html`` showing it all, with relative image paths and no external resources: for
+  a disk with a size, the object named (``"the 1-euro coin"``, from
+  :data:`rollingdisk.model.units.DISKS`) in the title and heading, and its first screen
+  the answers a person holding it asks (the speed above which it rolls straight and
+  stable, eq. 42 in m/s; how long it spins, from its Euler's-disk run; how it falls, from
+  its run to rest), in SI with the paper's units beside; then a
   table of contents, a viewport for phones (images shrink to the width, wide tables
   scroll), units on every number and axis (angles in degrees; the paper's units, or SI
   when the disk given has a physical scale, see :func:`rollingdisk.plotting.plots.axis_label`),
@@ -135,8 +142,10 @@ def build_atlas(disk: Disk | float = DEFAULT_H, out_dir="atlas", *, quick: bool 
         (default :data:`rollingdisk.model.disk.DEFAULT_H` = 0.17, about a commercial
         Euler's disk).  A disk with a physical size (e.g.
         ``rollingdisk.disk_from_options(disk="euro-1")``) adds SI values to
-        ``thresholds.json`` and the motions' records, and with a mass too it is the disk
-        run as Euler's disk (else the commercial toy).
+        ``thresholds.json`` and the motions' records, is the disk let go to rest, and
+        makes the page lead with its answers (named after it when it is in
+        :data:`rollingdisk.model.units.DISKS`); with a mass too it is the disk run as
+        Euler's disk (else the commercial toy).
     out_dir : path-like
         Folder to write; its parent folder must exist.
     quick : bool

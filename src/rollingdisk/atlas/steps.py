@@ -20,7 +20,8 @@ __all__ = ["steady_trajectory", "TO_REST"]
 
 #: The atlas's run past the guards (:func:`rollingdisk.phases.motion.simulate_to_rest`):
 #: a thick disk dropped from rest, tilted from upright, onto Coulomb ground; it bounces,
-#: rocks over its tread (rim changes) and settles upright.
+#: rocks over its tread (rim changes) and settles upright.  A disk with a physical size
+#: (a coin) is let go the same way with its own ``h`` (:func:`_to_rest_section`).
 TO_REST = {"h": 0.3, "Z_C": 1.6, "theta": 0.12, "e": 0.5, "mu": 0.5, "t_max": 100.0}
 
 
@@ -130,7 +131,7 @@ def _motion_steps(disk, out, chosen, *, quick, pr, files, dpi, euler) -> dict:
         motions["exact"] = _exact_section(chosen.stable, out, dpi, files)
         pr.done(f"period {motions['exact']['period']:.6g}")
         pr.step("a disk let go to rest: bounces, rocking")
-        motions["to_rest"] = _to_rest_section(out, quick, files)
+        motions["to_rest"] = _to_rest_section(out, quick, files, disk)
         pr.done(f"{motions['to_rest']['n_impacts']} impacts, at rest at "
                 f"t = {motions['to_rest']['t_end']:.4g}")
         pr.step("Euler's disk (run alongside)")
@@ -215,14 +216,21 @@ def _exact_section(motion, out: Path, dpi: int, files: list) -> dict:
             "frequency_at_largest": float(bb.frequency[ok[-1]]), "varpi": varpi}
 
 
-def _to_rest_section(out: Path, quick: bool, files: list) -> dict:
+def _to_rest_section(out: Path, quick: bool, files: list, disk: Disk | None = None) -> dict:
     """The run :data:`TO_REST` to rest (:func:`~rollingdisk.phases.motion.simulate_to_rest`),
-    its animation ``to_rest.gif`` (not when ``quick``) and its record for the page."""
+    its animation ``to_rest.gif`` (not when ``quick``) and its record for the page.
+
+    A ``disk`` with a physical size is the one let go (its ``h``; the record gains ``*_si``
+    times and lengths); any other disk stands for the generic thick disk of :data:`TO_REST`.
+    ``pose`` is how it lies at the end: ``"flat"`` on a face, ``"upright"`` on its tread,
+    ``"rim"`` on a rim edge (the kind of the last segment)."""
     from rollingdisk.model.ground import Coulomb
-    from rollingdisk.phases.motion import FlightSegment, simulate_to_rest
+    from rollingdisk.phases.line_contact import LineSegment
+    from rollingdisk.phases.motion import FlatSegment, FlightSegment, simulate_to_rest
     from rollingdisk.plotting.motion_anim import animate_motion
 
-    r = TO_REST
+    sized = disk is not None and disk.radius is not None
+    r = {**TO_REST, "h": disk.h} if sized else TO_REST
     s0 = [0.0, 0.0, r["Z_C"], 0.0, r["theta"], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
     res = simulate_to_rest(Disk(r["h"]), Coulomb(r["mu"]), (0.0, r["t_max"]), s0, e=r["e"])
     if not quick:
@@ -230,14 +238,21 @@ def _to_rest_section(out: Path, quick: bool, files: list) -> dict:
                        title=f"let go, h = {r['h']:g}")
         files.append(out / "to_rest.gif")
     kinds = [i.kind for i in res.impacts]
-    return {**r, "status": res.status, "message": res.message, "t_end": res.t_end,
-            "n_impacts": len(kinds), "n_rim": kinds.count("rim"),
-            "n_rim_change": kinds.count("rim-change"), "n_face": kinds.count("face"),
-            "n_flights": sum(isinstance(g, FlightSegment) for g in res.segments),
-            "n_segments": len(res.segments), "energy_initial": res.energy_initial,
-            "energy_final": res.energy_final, "impact_loss": res.impact_loss,
-            "dissipated": res.dissipated, "energy_balance": res.energy_balance,
-            "wall_time": res.wall_time, "gif": not quick}
+    last = res.segments[-1] if res.segments else None
+    pose = ("flat" if isinstance(last, FlatSegment) else
+            "upright" if isinstance(last, LineSegment) else "rim")
+    record = {**r, "status": res.status, "message": res.message, "t_end": res.t_end,
+              "n_impacts": len(kinds), "n_rim": kinds.count("rim"),
+              "n_rim_change": kinds.count("rim-change"), "n_face": kinds.count("face"),
+              "n_flights": sum(isinstance(g, FlightSegment) for g in res.segments),
+              "n_segments": len(res.segments), "energy_initial": res.energy_initial,
+              "energy_final": res.energy_final, "impact_loss": res.impact_loss,
+              "dissipated": res.dissipated, "energy_balance": res.energy_balance,
+              "wall_time": res.wall_time, "gif": not quick, "pose": pose}
+    if sized:
+        record.update(t_end_si=float(disk.time_to_si(res.t_end)),
+                      Z_C_si=float(disk.length_to_si(r["Z_C"])))
+    return record
 
 
 def _thresholds_si(disk) -> dict:

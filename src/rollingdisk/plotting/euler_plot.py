@@ -20,6 +20,34 @@ def _thin(n: int, k: int = 3000) -> np.ndarray:
     return np.unique(np.append(np.linspace(0, n - 1, k).astype(int), n - 1))
 
 
+def _label_2_5(x, pos=None) -> str:
+    """A minor tick's label on a log axis: ``2 x 10^n`` and ``5 x 10^n`` only."""
+    if not x > 0:
+        return ""
+    e = math.floor(math.log10(x) + 1e-9)
+    c = x / 10.0 ** e
+    if abs(c - round(c)) > 1e-6 or round(c) not in (2, 5):
+        return ""
+    return rf"$\mathdefault{{{round(c)}\times10^{{{e}}}}}$"
+
+
+def _sparse_log_labels(ax) -> None:
+    """Minor tick labels on the log axes of ``ax`` that cannot overlap: none where an axis
+    shows two powers of ten or more (they are labelled), else at 2 and 5 times a power of
+    ten only (matplotlib's default labels 2, 3, 4 and 6 times a power of ten on an axis that
+    shows one power of ten, and they collide)."""
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+
+    for axis, lim in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
+        lo, hi = sorted(lim)
+        if axis.get_scale() != "log" or not lo > 0:
+            continue
+        if math.floor(math.log10(hi)) - math.ceil(math.log10(lo)) >= 1:
+            axis.set_minor_formatter(NullFormatter())
+        else:
+            axis.set_minor_formatter(FuncFormatter(_label_2_5))
+
+
 def euler_disk_title(result) -> str:
     """A figure title for Euler's disk run to its end, in one style: symbols with units,
     SI first, the paper's time unit after (``"Euler's disk: fell flat, α = 0.001 rad at
@@ -98,6 +126,7 @@ def plot_euler_disk(result, fig=None, *, title: str | None = None) -> dict:
         ax2.text(0.5, 0.5, "the fit window was not reached", ha="center",
                  transform=ax2.transAxes)
     ax2.set_title(r"log-log against $t_0 - t$", fontsize=9)
+    _sparse_log_labels(ax2)
     title = euler_disk_title(r) if title is None else title
     if title:
         fig.suptitle(title, fontsize=10)
