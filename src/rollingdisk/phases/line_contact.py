@@ -517,6 +517,10 @@ def run_line_contact(h, ground, t0, t1, s, *, rtol=1e-10, atol=1e-12, slip_tol=1
             no_stuck = True
         elif name == "spin stops":
             y = _snap(h, y, (7,))  # the sliding corner's slip is exactly 2h |omega3|
+            # at the stop the sliding corner's friction is set-valued: the next sub-phase,
+            # chosen by the set-valued law, stores this instant; the single-valued formula
+            # of the pivoting one, evaluated at zero slip, would not (it can leave the cone)
+            _drop_last(segs)
         elif name == "rolling stops":
             y = _snap(h, y, (6,))
 
@@ -543,6 +547,14 @@ def _snap(h, y, idx):
     z[list(idx)] = 0.0
     z[8] += line_energy(h, y) - line_energy(h, z)
     return z
+
+
+def _drop_last(segs):
+    """The last segment without its last point (the next segment starts there)."""
+    seg = segs[-1]
+    if seg.t.size > 1:
+        segs[-1] = LineSegment(seg.t[:-1], seg.states[:, :-1], seg.mode[:-1],
+                               seg.normal[:, :-1], seg.friction[:, :-1])
 
 
 def _segment(t, Y, p):
