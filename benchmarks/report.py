@@ -1,8 +1,8 @@
 """Write the measured start-up figures into the README and docs/performance.md.
 
 One source: the JSON that ``benchmarks/startup.py`` writes (default
-``benchmarks/results/startup.json``) and, where present, ``benchmarks/sweep.py``'s
-(``benchmarks/results/sweep.json``).  This script renders it into
+``benchmarks/results/startup.json``) and, where present, ``benchmarks/sweep.py``'s and
+``benchmarks/atlas.py``'s (``benchmarks/results/sweep.json``, ``atlas.json``).  This script renders it into
 
 * the README's block between the markers ``<!-- performance:begin ... -->`` and
   ``<!-- performance:end -->`` (one paragraph), and
@@ -10,7 +10,7 @@ One source: the JSON that ``benchmarks/startup.py`` writes (default
   that ``tests/test_startup_report.py`` can check that both texts are what this script
   makes of that data: no figure is copied by hand.
 
-Run:  python benchmarks/report.py [--startup PATH] [--sweep PATH] [--check]
+Run:  python benchmarks/report.py [--startup PATH] [--sweep PATH] [--atlas PATH] [--check]
 """
 
 from __future__ import annotations
@@ -53,10 +53,42 @@ def render_readme(d: dict) -> str:
         f"{b['simulate (cold)']:.2f} s ({r['simulate_cold_over_script']:.2f}×) with an empty "
         f"compile cache: a short run imports neither numba nor scipy's integrators. A 10 × 10 "
         f"`rollingdisk sweep` takes {d['sweep_10x10_warm_s']:.2f} s warm (target 0.8 s). "
-        + _sweep_sentence(d.get("sweep")) +
+        + _atlas_sentence(d.get("atlas")) + _sweep_sentence(d.get("sweep")) +
         f"Tables and the packages each command imports: "
         f"[`docs/performance.md`](docs/performance.md).")
     return f"{BEGIN}\n{_wrap(text)}\n{END}"
+
+
+def _atlas_sentence(a: dict | None) -> str:
+    """The README's sentence on the atlas (``benchmarks/atlas.py``'s JSON), or ''."""
+    if not a:
+        return ""
+    slow = sorted(a["sections_s"].items(), key=lambda kv: -kv[1])[:2]
+    return (f"`rollingdisk atlas` on the default disk takes {a['atlas_warm_s']:.1f} s warm "
+            f"(`benchmarks/atlas.py`, best of {a['rounds']}; {a['atlas_over_script']:.0f}× "
+            f"the user's script; targets {a['targets']['atlas_warm_s']:g} s or "
+            f"{a['targets']['atlas_over_script']:g}×), most of it in "
+            + " and ".join(f"{k} ({v:.1f} s)" for k, v in slow) + ". ")
+
+
+def _atlas_table(a: dict | None) -> str:
+    """docs/performance.md's section on the atlas, or ''."""
+    if not a:
+        return ""
+    rows = "\n".join(f"| {k} | {v:.1f} |" for k, v in a["sections_s"].items())
+    return f"""
+## The atlas
+
+`benchmarks/atlas.py`: `rollingdisk atlas` on the default disk, a whole process, warm, best
+of {a['rounds']} rounds interleaved with the user's script ({a['script_s']:.2f} s):
+**{a['atlas_warm_s']:.1f} s**, {a['atlas_over_script']:.1f}× the script (targets
+{a['targets']['atlas_warm_s']:g} s or {a['targets']['atlas_over_script']:g}×). Its sections,
+as the atlas times them (Euler's disk runs in a helper process alongside the others):
+
+| section | seconds |
+|---|---|
+{{rows}}
+""".replace("{rows}", rows)
 
 
 def _sweep_sentence(w: dict | None) -> str:
@@ -159,7 +191,7 @@ Heavy packages each command imports (`python -X importtime`, cumulative seconds)
 | command | packages |
 |---|---|
 {imports}
-{_sweep_table(d.get("sweep"))}
+{_atlas_table(d.get("atlas"))}{_sweep_table(d.get("sweep"))}
 {DATA_BEGIN}
 {json.dumps(d, indent=1)}
 {DATA_END}
@@ -184,6 +216,8 @@ def main(argv=None) -> int:
                     "startup.json")
     ap.add_argument("--sweep", type=Path, default=ROOT / "benchmarks" / "results" /
                     "sweep.json", help="benchmarks/sweep.py's JSON (left out if absent)")
+    ap.add_argument("--atlas", type=Path, default=ROOT / "benchmarks" / "results" /
+                    "atlas.json", help="benchmarks/atlas.py's JSON (left out if absent)")
     ap.add_argument("--check", action="store_true",
                     help="exit 1 if the README or docs/performance.md differ from what the "
                     "data in docs/performance.md gives (writes nothing)")
@@ -195,8 +229,9 @@ def main(argv=None) -> int:
         print("up to date" if ok else "out of date: run python benchmarks/report.py")
         return 0 if ok else 1
     d = json.loads(args.startup.read_text())
-    if args.sweep.exists():
-        d["sweep"] = json.loads(args.sweep.read_text())
+    for key, path in (("sweep", args.sweep), ("atlas", args.atlas)):
+        if path.exists():
+            d[key] = json.loads(path.read_text())
     DOCS.write_text(render_docs(d))
     readme = README.read_text()
     README.write_text(readme.replace(readme_block(readme), render_readme(d)))

@@ -391,35 +391,42 @@ def draw_scene(fig, tf, frames, paths, head: str | Callable[[int], str],
     t, XP, YP, XC, YC = (np.asarray(p, float) for p in paths)
     (x0, x1), (y0, y1), (z0, z1) = _limits((t, XP, YP, XC, YC), frames)
     ax = fig.add_subplot(1, 1, 1, projection="3d")
+    # the title is a figure text: an axes title is placed above the axes' tick labels,
+    # which a 3D axes computes on every frame even with its axis off
+    title = fig.text(0.5, 0.96, "", ha="center", va="top", fontsize=9)
     # the clock in the title: seconds when the disk has a physical scale, else sqrt(a/g)
     ft = si_factor(disk, "time")
     clock = ((lambda ti: f"t = {ti * ft:6.2f} s") if ft != 1.0
              else (lambda ti: f"t = {ti:6.2f} √(a/g)"))
 
+    # the scene is set up once; a frame moves the paths and redraws the disk only (an
+    # axes cleared and set up again on every frame cost most of a frame's time)
+    ax.set_autoscale_on(False)  # fixed limits: no autoscaling from the drawn parts
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+    ax.set_zlim(z0, z1)
+    # no axis machinery (ticks, grids and panes): the plane Z = 0 is one polygon under
+    # everything else
+    ax.set_axis_off()
+    ax.add_collection3d(_plane(x0, x1, y0, y1))
+    ax.computed_zorder = False  # plane first, then the disk (see draw_disk)
+    (path_p,) = ax.plot([], [], [], color="tab:red", lw=1.0, zorder=1.2)
+    (path_c,) = ax.plot([], [], [], color="tab:blue", lw=0.7, ls="--", zorder=1.2)
+    ax.set_box_aspect((x1 - x0, y1 - y0, z1 - z0))
+    ax.view_init(elev=28, azim=-60)
+    drawn: dict = {}
+
     def draw(i):
         ti, pose = tf[i], frames[i]
-        ax.cla()
-        ax.set_autoscale_on(False)  # fixed limits: no autoscaling from the drawn parts
-        ax.set_xlim(x0, x1)
-        ax.set_ylim(y0, y1)
-        ax.set_zlim(z0, z1)
-        # no axis machinery (ticks, grids and panes are much of a frame's cost): the plane
-        # Z = 0 is drawn as one polygon under everything else
-        ax.set_axis_off()
-        ax.add_collection3d(_plane(x0, x1, y0, y1))
+        for artist in drawn.values():
+            artist.remove()
         k = int(np.searchsorted(t, ti, side="right"))
-        ax.computed_zorder = False  # plane first, then the disk (see draw_disk)
-        ax.plot(XP[:k], YP[:k], 0.0 * XP[:k], color="tab:red", lw=1.0, zorder=1.2)
-        ax.plot(XC[:k], YC[:k], 0.0 * XC[:k], color="tab:blue", lw=0.7, ls="--",
-                zorder=1.2)
-        draw_disk(ax, pose)
-        ax.set_xlim(x0, x1)
-        ax.set_ylim(y0, y1)
-        ax.set_zlim(z0, z1)
-        ax.set_box_aspect((x1 - x0, y1 - y0, z1 - z0))
-        ax.view_init(elev=28, azim=-60)
+        path_p.set_data_3d(XP[:k], YP[:k], 0.0 * XP[:k])
+        path_c.set_data_3d(XC[:k], YC[:k], 0.0 * XC[:k])
+        drawn.clear()
+        drawn.update(draw_disk(ax, pose))
         text = head(i) if callable(head) else head
-        ax.set_title(f"{text}   {clock(ti)}", fontsize=9)
+        title.set_text(f"{text}   {clock(ti)}")
         return []
 
     return draw
