@@ -2,7 +2,8 @@
 
 One source: the JSON that ``benchmarks/startup.py`` writes (default
 ``benchmarks/results/startup.json``) and, where present, ``benchmarks/sweep.py``'s and
-``benchmarks/atlas.py``'s (``benchmarks/results/sweep.json``, ``atlas.json``).  This script renders it into
+``benchmarks/atlas.py``'s (``benchmarks/results/sweep.json``, ``atlas.json``).  This
+script renders it into
 
 * the README's block between the markers ``<!-- performance:begin ... -->`` and
   ``<!-- performance:end -->`` (one paragraph), and
@@ -54,8 +55,8 @@ def render_readme(d: dict) -> str:
         f"compile cache: a short run imports neither numba nor scipy's integrators. A 10 × 10 "
         f"`rollingdisk sweep` takes {d['sweep_10x10_warm_s']:.2f} s warm (target 0.8 s). "
         + _atlas_sentence(d.get("atlas")) + _sweep_sentence(d.get("sweep")) +
-        f"Tables and the packages each command imports: "
-        f"[`docs/performance.md`](docs/performance.md).")
+        "Tables and the packages each command imports: "
+        "[`docs/performance.md`](docs/performance.md).")
     return f"{BEGIN}\n{_wrap(text)}\n{END}"
 
 
