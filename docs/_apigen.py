@@ -2,7 +2,8 @@
 
 Every name of ``rollingdisk.__all__`` is listed under its public path (``rollingdisk.Disk``),
 plus the members of the public modules ``rollingdisk.theory.exact``, ``rollingdisk.sweep``,
-``rollingdisk.scenarios.euler_disk`` and ``rollingdisk.plotting``; autosummary then generates
+``rollingdisk.scenarios.euler_disk``, ``rollingdisk.plotting`` and ``rollingdisk.symbolic``;
+autosummary then generates
 one page per name under ``docs/api/generated/``.  No private module path is written down: a name's
 topic is read from the module that defines it (its ``__module__``, or for a constant the
 module whose ``__all__`` holds it), so the index follows the package when modules move, and
@@ -35,6 +36,11 @@ TOPICS = (
     ("euler_disk", "Euler's disk", "The toy run to its end: ``rollingdisk.scenarios.euler_disk``."),
     ("plotting", "Plotting", "Maps and trajectory plots (matplotlib): "
                              "``rollingdisk.plotting``."),
+    ("symbolic", "Derivations (sympy)",
+     "The Newton-Euler derivation of the equations of motion and the check of every printed "
+     "equation of the paper against it: ``rollingdisk.symbolic`` (what ``rollingdisk derive`` "
+     "runs; the derived equations are shown on the page 'The equations of sections 3 and 4, "
+     "derived')."),
     ("other", "Other public names", "Names no topic rule places (yet)."),
 )
 
@@ -59,7 +65,7 @@ NAME_TOPICS = {
 
 #: Public modules documented member by member, under their own topic (topic -> module).
 MODULES = {"exact": "theory.exact", "sweep": "sweep", "euler_disk": "scenarios.euler_disk",
-           "plotting": "plotting"}
+           "plotting": "plotting", "symbolic": "symbolic"}
 
 
 def _defining_module(package, name: str, obj) -> str:

@@ -37,6 +37,10 @@ extensions = [
     "sphinx.ext.autosummary",
     "numpydoc",
     "sphinx_gallery.gen_gallery",
+    "sphinx.ext.mathjax",
+    # MathJax shipped with the site (no request to a CDN): the pages render math offline
+    "sphinx-mathjax-offline",
+    "_rdext",  # the CLI reference and the derived equations, made from the library
 ]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 root_doc = "index"
@@ -47,7 +51,7 @@ suppress_warnings: list[str] = []
 
 # -- MyST: the Markdown pages (docs/*.md) -------------------------------------------------
 myst_heading_anchors = 3
-myst_enable_extensions: list[str] = []
+myst_enable_extensions = ["dollarmath", "amsmath"]
 
 # -- autodoc / autosummary / numpydoc ------------------------------------------------------
 autosummary_generate = True
