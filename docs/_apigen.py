@@ -21,21 +21,25 @@ from pathlib import Path
 TOPICS = (
     ("disk", "Disk and equations of motion",
      "The disk model, its physical units, the equations of motion of section 2 and the "
-     "library's input errors."),
+     "library's input errors. Described in :doc:`../notation`."),
     ("steady", "Steady motions and stability",
      "Steady motions (section 3), their small oscillations and stability (section 4), "
-     "thresholds, and the regions where they exist."),
+     "thresholds, and the regions where they exist. Described in :doc:`../equations` and "
+     ":doc:`../errata`."),
     ("simulation", "Simulation",
      "Nonlinear simulation with guard events, the trajectory it returns, and measurements "
-     "compared with the theory."),
+     "compared with the theory. Described in :doc:`../simulation` and :doc:`../outcomes`."),
     ("friction", "Friction: real ground",
      "Coulomb friction with rolling and sliding, rolling resistance, pivoting friction, air "
-     "drag; the hybrid simulation and its energy balance."),
-    ("exact", "Exact motions", "The integrable disk by quadrature: ``rollingdisk.theory.exact``."),
-    ("sweep", "Sweeps", "Many runs as one dataset: ``rollingdisk.sweep``."),
+     "drag; the hybrid simulation and its energy balance; the motion past the guards. "
+     "Described in :doc:`../friction`, :doc:`../impacts` and :doc:`../motion`."),
+    ("exact", "Exact motions", "The integrable disk by quadrature: ``rollingdisk.theory.exact``. "
+     "Described in :doc:`../exact`."),
+    ("sweep", "Sweeps", "Many runs as one dataset: ``rollingdisk.sweep``. Described in "
+     ":doc:`../sweeps`."),
     ("euler_disk", "Euler's disk", "The toy run to its end: ``rollingdisk.scenarios.euler_disk``."),
     ("plotting", "Plotting", "Maps and trajectory plots (matplotlib): "
-                             "``rollingdisk.plotting``."),
+                             "``rollingdisk.plotting``. The paper's figures: :doc:`../figures`."),
     ("symbolic", "Derivations (sympy)",
      "The Newton-Euler derivation of the equations of motion and the check of every printed "
      "equation of the paper against it: ``rollingdisk.symbolic`` (what ``rollingdisk derive`` "
