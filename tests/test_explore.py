@@ -369,6 +369,6 @@ def test_static_files_are_package_data():
     globs = conf["tool"]["setuptools"]["package-data"]["rollingdisk.explore"]
     static = SRC / "rollingdisk" / "explore" / "static"
     files = sorted(p.name for p in static.iterdir())
-    assert files == ["explore.css", "explore.js", "index.html"]
+    assert files == ["explore.css", "explore.js", "index.html", "widget.js"]
     for name in files:  # each shipped in the wheel
         assert any(fnmatch.fnmatch(f"static/{name}", g) for g in globs), name

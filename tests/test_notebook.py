@@ -1,0 +1,188 @@
+"""The notebook view (rollingdisk.explore.widget): a notebook executed by nbclient creates the
+widget of a 1-euro coin, clicks through the widget's model (the trait ``selected``, as the
+browser sets it) and checks the numbers it sends equal the library's
+(:func:`rollingdisk.steady_motion`, :func:`rollingdisk.stability`) to 1e-9; and the ES module
+drawn in a real browser (Debian's Chromium) with a fake anywidget model: the map and the 3D
+view are painted, a click on the map sets ``selected`` on the model, and the page asks
+nothing of the network.
+"""
+
+from __future__ import annotations
+
+import http.server
+import json
+import os
+import shutil
+import tempfile
+import threading
+import time
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+
+pytest.importorskip("anywidget")
+
+
+def test_the_module_ships_with_the_package():
+    from rollingdisk.explore.widget import ESM_PATH
+
+    assert ESM_PATH.is_file() and "export default" in ESM_PATH.read_text()
+    assert "import " not in ESM_PATH.read_text().split("export default")[0].replace(
+        "// No import", "")  # self-contained: nothing to fetch
+
+
+def test_a_click_in_python_sends_the_librarys_numbers():
+    import rollingdisk as rd
+    from rollingdisk.explore.widget import widget
+
+    w = widget("euro-1")
+    assert w.disk["radius_m"] == pytest.approx(0.011625)
+    w.selected = [0.4, 1.5]
+    m = rd.steady_motion(rd.disk_from_options(disk="euro-1"), "rough", 0.4, omega30=1.5)
+    s = rd.stability(m)
+    assert w.motion["Omega0"] == pytest.approx(m.Omega0, abs=1e-9)
+    assert w.motion["varpi2"] == pytest.approx(s.varpi2, abs=1e-9)
+    ts = rd.disk_from_options(disk="euro-1").time_to_si(1.0)
+    assert w.motion["si"]["Omega0 [rad/s]"] == pytest.approx(m.Omega0 / ts, rel=1e-12)
+    assert len(w.frames["rims"]) == len(w.frames["t"]) > 10
+
+
+def test_bad_input_is_named():
+    from rollingdisk.explore.widget import play, widget
+    from rollingdisk.util.errors import ParameterError, ParameterTypeError
+
+    with pytest.raises(ParameterError, match="ground"):
+        widget(0.1, ground="ice")
+    with pytest.raises(ParameterTypeError, match="disk"):
+        widget([0.1])
+    with pytest.raises(ParameterTypeError, match="result"):
+        play("a motion")
+
+
+@pytest.mark.slow
+def test_notebook_executes_and_matches_the_library(tmp_path):
+    nbformat = pytest.importorskip("nbformat")
+    nbclient = pytest.importorskip("nbclient")
+    pytest.importorskip("ipykernel")
+    cells = [
+        "import rollingdisk as rd\nfrom rollingdisk.explore.widget import widget, play",
+        "w = widget('euro-1')\nw",
+        "w.selected = [0.4, 1.5]  # what a click on the map sets\n"
+        "m = rd.steady_motion(rd.disk_from_options(disk='euro-1'), 'rough', 0.4, "
+        "omega30=1.5)\ns = rd.stability(m)\n"
+        "assert abs(w.motion['Omega0'] - m.Omega0) <= 1e-9\n"
+        "assert abs(w.motion['varpi2'] - s.varpi2) <= 1e-9\n"
+        "assert abs(w.motion['omega20'] - m.omega20) <= 1e-9\n"
+        "print('numbers', w.motion['Omega0'], w.motion['varpi2'])",
+        "p = play(rd.simulate_steady(m, 2.0))\nlen(p.frames['rims'])",
+    ]
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells])
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
+                                 "language": "python"}
+    old = os.environ.get("PYTHONPATH")
+    os.environ["PYTHONPATH"] = str(ROOT / "src") + (os.pathsep + old if old else "")
+    try:
+        client = nbclient.NotebookClient(nb, timeout=300, kernel_name="python3",
+                                         resources={"metadata": {"path": str(tmp_path)}})
+        client.execute()
+    finally:
+        if old is None:
+            os.environ.pop("PYTHONPATH")
+        else:
+            os.environ["PYTHONPATH"] = old
+    outs = [o for c in nb.cells for o in c.get("outputs", [])]
+    assert not [o for o in outs if o.output_type == "error"]
+    views = [o for o in outs if "application/vnd.jupyter.widget-view+json" in o.get("data", {})]
+    assert views, "the widget was displayed"
+    text = "".join(o.get("text", "") for o in outs)
+    assert "numbers" in text
+
+
+# ----------------------------------------------------------------- the module in a browser
+CHROMIUM, CHROMEDRIVER = Path("/usr/bin/chromium"), Path("/usr/bin/chromedriver")
+
+PAGE = """<!doctype html><meta charset="utf-8"><div id="el"></div><script type="module">
+import view from "./widget.js";
+const data = JSON.parse(document.getElementById("data").textContent);
+const handlers = {};
+const model = {
+  get: (k) => data[k],
+  set: (k, v) => { data[k] = v; (handlers["change:" + k] || []).forEach((f) => f()); },
+  on: (ev, f) => { (handlers[ev] = handlers[ev] || []).push(f); },
+  off: () => {},
+  save_changes: () => { window.saved = (window.saved || 0) + 1; },
+  send: () => {},
+};
+window.model = model;
+view.render({ model, el: document.getElementById("el") });
+window.rendered = true;
+</script><script type="application/json" id="data">DATA</script>"""
+
+
+@pytest.fixture(scope="module")
+def served(tmp_path_factory):
+    """The module and a page with a fake model (the traits of a real widget), served over
+    HTTP from a temporary folder (a browser loads no ES module from file://)."""
+    from rollingdisk.explore.widget import ESM_PATH, widget
+
+    w = widget(0.17)
+    w.selected = [0.5, 1.0]
+    data = {k: getattr(w, k) for k in ("disk", "map", "motion", "frames")}
+    data["selected"] = []
+    tmp = tmp_path_factory.mktemp("widget")
+    shutil.copy(ESM_PATH, tmp / "widget.js")
+    (tmp / "index.html").write_text(PAGE.replace("DATA", json.dumps(data)))
+    handler = lambda *a: http.server.SimpleHTTPRequestHandler(*a, directory=str(tmp))  # noqa: E731
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    try:
+        yield f"http://127.0.0.1:{server.server_address[1]}"
+    finally:
+        server.shutdown()
+
+
+@pytest.mark.slow
+def test_module_draws_and_a_click_round_trips(served):
+    if not (CHROMIUM.exists() and CHROMEDRIVER.exists()):
+        pytest.skip("needs /usr/bin/chromium and /usr/bin/chromedriver")
+    webdriver = pytest.importorskip("selenium.webdriver")
+    from selenium.webdriver.chrome.service import Service
+    from selenium.webdriver.common.action_chains import ActionChains
+
+    options = webdriver.ChromeOptions()
+    options.binary_location = str(CHROMIUM)
+    profile = tempfile.TemporaryDirectory(prefix="rd-widget-chromium-")
+    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu",
+                 "--disable-background-networking", "--disable-component-update",
+                 "--no-first-run", "--window-size=900,700", f"--user-data-dir={profile.name}"):
+        options.add_argument(flag)
+    options.set_capability("goog:loggingPrefs", {"performance": "ALL"})
+    drv = webdriver.Chrome(service=Service(executable_path=str(CHROMEDRIVER)), options=options)
+    try:
+        drv.get(served + "/index.html")
+        end = time.monotonic() + 30
+        while not drv.execute_script("return window.rendered === true") and \
+                time.monotonic() < end:
+            time.sleep(0.2)
+        painted = """const c = document.querySelector(arguments[0]);
+            const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+            const seen = new Set();
+            for (let i = 0; i < d.length; i += 4 * 97) seen.add(d[i] + ',' + d[i+1] + ',' + d[i+2]);
+            return seen.size;"""
+        assert drv.execute_script(painted, "canvas.rd-map") >= 3  # stable, unstable, none
+        assert drv.execute_script(painted, "canvas.rd-3d") >= 3  # the disk on the plane
+        canvas = drv.find_element("css selector", "canvas.rd-map")
+        ActionChains(drv).move_to_element_with_offset(canvas, 30, -40).click().perform()
+        sel = drv.execute_script("return window.model.get('selected')")
+        assert isinstance(sel, list) and len(sel) == 2
+        assert 0.0 < sel[0] < 1.5708 and drv.execute_script("return window.saved") == 1
+        urls = [e["params"]["request"]["url"] for e in
+                (json.loads(x["message"])["message"] for x in drv.get_log("performance"))
+                if e.get("method") == "Network.requestWillBeSent"]
+        for url in urls:
+            assert url.startswith((served, "chrome:", "data:")), url
+    finally:
+        drv.quit()
+        profile.cleanup()
