@@ -126,12 +126,13 @@ def test_a_positional_disk_name_is_the_disk_option(capsys):
 
 def test_explore_takes_the_disk_options():
     import rollingdisk as rd
-    from rollingdisk.explore.command import _start_h
+    from rollingdisk.explore.command import _start_disk
 
     parse = build_parser().parse_args
-    assert _start_h(parse(["explore", "--disk", "euro-1"])) == rd.DISKS["euro-1"].h
-    assert _start_h(parse(["explore"])) == rd.DEFAULT_H
-    assert _start_h(parse(["explore", "--radius", "1cm", "--thickness", "4mm"])) == \
+    h, disk = _start_disk(parse(["explore", "--disk", "euro-1"]))
+    assert h == rd.DISKS["euro-1"].h and disk.radius == pytest.approx(0.011625)
+    assert _start_disk(parse(["explore"])) == (rd.DEFAULT_H, None)
+    assert _start_disk(parse(["explore", "--radius", "1cm", "--thickness", "4mm"]))[0] == \
         pytest.approx(0.2, rel=1e-12)
 
 

@@ -306,12 +306,12 @@ def _args(argv):
 
 
 def test_command_options():
-    from rollingdisk.explore.command import _start_h
+    from rollingdisk.explore.command import _start_disk
 
     args = _args([])
     assert (args.h, args.ground, args.port, args.host, args.no_browser) == (
         None, "rough", 8765, None, False)
-    assert _start_h(args) == rd.DEFAULT_H  # no disk given: the default h
+    assert _start_disk(args) == (rd.DEFAULT_H, None)  # no disk given: the default h
     assert args.handler is run
     with pytest.raises(SystemExit):
         _args(["--port", "70000"])
@@ -372,3 +372,24 @@ def test_static_files_are_package_data():
     assert files == ["explore.css", "explore.js", "index.html", "widget.js"]
     for name in files:  # each shipped in the wheel
         assert any(fnmatch.fnmatch(f"static/{name}", g) for g in globs), name
+
+
+def test_a_physical_disk_gets_si_values_beside_the_papers():
+    """With ``--disk euro-1`` the steady motions of the coin's h come with SI values: the
+    paper's times the coin's scales (a, sqrt(a/g), sqrt(g a)); another h has none."""
+    coin = rd.disk_from_options(disk="euro-1")
+    defaults = {"h": coin.h, "ground": "rough", "disk": coin}
+    q = {"theta0": ["0.4"], "omega30": ["1.5"]}
+    rec = api.steady_payload(q, defaults)
+    m = rd.steady_motion(coin, "rough", 0.4, omega30=1.5)
+    s = rd.stability(m)
+    a, g = 0.011625, coin.gravity
+    ts = (a / g) ** 0.5
+    si = rec["si"]
+    assert si["Omega0 [rad/s]"] == pytest.approx(m.Omega0 / ts, rel=1e-12)
+    assert si["r_C [mm]"] == pytest.approx(1e3 * m.r_C * a, rel=1e-12)
+    assert si["speed of C [m/s]"] == pytest.approx(m.v_C * (g * a) ** 0.5, rel=1e-12)
+    assert si["period [s]"] == pytest.approx(s.period * ts, rel=1e-12)
+    other = api.steady_payload({**q, "h": ["0.3"]}, defaults)
+    assert "si" not in other
+    assert "si" not in api.steady_payload(q, {"h": coin.h, "ground": "rough"})

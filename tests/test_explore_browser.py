@@ -181,3 +181,52 @@ def test_a_phone_wide_page_has_no_sideways_scroll_and_its_map_still_answers(page
         assert abs(float(box.get_attribute("data-value")) - omega30) < tol * 3.0 / BOX["h"]
     finally:
         page.set_window_size(1300, 980)
+
+
+def test_a_coin_shows_si_values_and_fits_a_phone():
+    """``explore --disk euro-1``: a click on the map at 420 CSS pixels shows the steady
+    motion's SI values beside the paper's (the coin's scales times the library's numbers),
+    and the page still has no sideways scroll."""
+    import rollingdisk as rd
+
+    coin = rd.disk_from_options(disk="euro-1")
+    srv = make_server(coin.h, "rough", "127.0.0.1", 0, disk=coin)
+    srv.start_in_thread()
+    options = webdriver.ChromeOptions()
+    options.binary_location = str(CHROMIUM)
+    profile = tempfile.TemporaryDirectory(prefix="rd-chromium-")
+    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu",
+                 "--disable-background-networking", "--disable-component-update",
+                 "--disable-sync", "--no-first-run", "--window-size=420,900",
+                 f"--user-data-dir={profile.name}"):
+        options.add_argument(flag)
+    driver = webdriver.Chrome(service=Service(executable_path=str(CHROMEDRIVER)),
+                              options=options)
+    try:
+        inner = driver.execute_script("return window.innerWidth")
+        if inner != 420:
+            driver.set_window_size(2 * 420 - inner, 900)
+        driver.get(srv.url)
+        wait_for(driver, "return document.getElementById('map').dataset.ready === '1'")
+        canvas = driver.find_element(By.ID, "map")
+        scale = canvas.size["width"] / 560
+        px = (BOX["x0"] + 0.7 / (0.5 * math.pi) * BOX["w"]) * scale
+        py = (BOX["y0"] + (1 - 1.4 / 3.0) * BOX["h"]) * scale
+        ActionChains(driver).move_to_element_with_offset(
+            canvas, int(round(px - canvas.size["width"] / 2)),
+            int(round(py - canvas.size["height"] / 2))).click().perform()
+        wait_for(driver, "return document.getElementById('steady').dataset.exists === 'true'")
+        got = shown(driver)
+        m = rd.steady_motion(coin, "rough", float(got["theta0"]),
+                             omega30=float(got["omega30"]))
+        ts = float(coin.time_to_si(1.0))
+        assert float(got["si:Omega0 [rad/s]"]) == pytest.approx(m.Omega0 / ts, rel=1e-9)
+        assert float(got["si:r_C [mm]"]) == pytest.approx(1e3 * m.r_C * 0.011625, rel=1e-9)
+        wide = driver.execute_script(
+            "return [document.documentElement.scrollWidth, window.innerWidth]")
+        assert wide[0] <= wide[1], wide
+    finally:
+        driver.quit()
+        srv.shutdown()
+        srv.server_close()
+        profile.cleanup()

@@ -23,7 +23,8 @@ import numpy as np
 import rollingdisk as rd
 
 __all__ = ["ApiError", "GROUNDS", "PLANES", "N_MAX", "T_END_MAX", "POINTS_MAX",
-           "SIM_MAX_STEPS", "H_RANGE", "map_payload", "steady_payload", "simulate_payload"]
+           "SIM_MAX_STEPS", "H_RANGE", "map_payload", "steady_payload", "simulate_payload",
+           "si_record"]
 
 GROUNDS = ("rough", "smooth")
 #: Map planes: the tilt ``theta0`` against ``omega30``, ``Omega0`` or ``r_C`` (Figure 4).
@@ -289,7 +290,24 @@ def steady_payload(query: dict, defaults: dict | None = None) -> dict:
         return {**base, "exists": False, "reason": str(exc)}
     except rd.ParameterError as exc:  # the request is not one motion (e.g. r_C on smooth)
         raise ApiError(str(exc)) from None
-    return _motion_record(m, s)
+    rec = _motion_record(m, s)
+    disk = defaults.get("disk")
+    if disk is not None and disk.radius is not None and h == disk.h:
+        rec["si"] = si_record(disk, m, s)
+    return rec
+
+
+def si_record(disk, m, s) -> dict:
+    """SI values of a steady motion of ``disk`` (a disk with a physical size): label ->
+    value, the labels naming their unit."""
+    ts = float(disk.time_to_si(1.0))
+    a = float(disk.length_to_si(1.0))
+    out = {"radius [mm]": 1e3 * a, "Omega0 [rad/s]": m.Omega0 / ts,
+           "omega20 [rad/s]": m.omega20 / ts, "omega30 [rad/s]": m.omega30 / ts,
+           "r_C [mm]": 1e3 * m.r_C * a, "speed of C [m/s]": m.v_C * a / ts}
+    if s.period is not None and math.isfinite(s.period):
+        out["period [s]"] = s.period * ts
+    return {k: _json_float(v) for k, v in out.items()}
 
 
 # -------------------------------------------------------------------------- simulate

@@ -109,15 +109,17 @@ def _add_disk_options(p) -> None:
                    help="gravitational acceleration (9.81m/s^2); not used")
 
 
-def _start_h(args) -> float:
-    """The ``h`` the page starts with, from the disk options (checked in the page's range)."""
+def _start_disk(args):
+    """``(h, disk)``: the ``h`` the page starts with, from the disk options (checked in the
+    page's range), and the disk when it has a physical size (SI values beside), else None."""
     opts = {k: getattr(args, k, None) for k in ("disk", "radius", "diameter", "thickness",
                                                  "mass", "gravity")}
     h = getattr(args, "h", None)
     if h is None and all(v is None for v in opts.values()):
-        return rd.DEFAULT_H
+        return rd.DEFAULT_H, None
     disk = rd.disk_from_options(**opts, h=h, option_prefix="--")
-    return check_real("h", disk.h, low=api.H_RANGE[0], high=api.H_RANGE[1])
+    h = check_real("h", disk.h, low=api.H_RANGE[0], high=api.H_RANGE[1])
+    return h, (disk if disk.radius is not None else None)
 
 
 def _say(line: str) -> None:
@@ -140,12 +142,13 @@ def run(args) -> int:
     import webbrowser
 
 
-    h = _start_h(args)
+    h, disk = _start_disk(args)
     # beyond this machine only when asked for by name, and then with a warning (once the
     # address is bound: an address that cannot be is one line, the error)
     host = args.host if args.host is not None else DEFAULT_HOST
     try:
-        server = make_server(h, args.ground, host, args.port, verbose=args.verbose)
+        server = make_server(h, args.ground, host, args.port, verbose=args.verbose,
+                             disk=disk)
     except OSError as exc:
         hint = " (choose another with --port, or --port 0 for any free one)" \
             if exc.errno == errno.EADDRINUSE else ""

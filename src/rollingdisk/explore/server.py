@@ -133,8 +133,10 @@ class ExplorerServer(ThreadingHTTPServer):
     Attributes
     ----------
     defaults : dict
-        ``{"h": ..., "ground": ...}``: what the page starts with and what a query without
-        ``h`` / ``ground`` means.
+        ``{"h": ..., "ground": ..., "disk": ...}``: what the page starts with and what a
+        query without ``h`` / ``ground`` means; ``disk`` the :class:`~rollingdisk.Disk` with
+        a physical size it was started with (its steady motions come with SI values), or
+        None.
     url : str
         ``http://host:port/`` with the port actually bound.
     """
@@ -143,8 +145,9 @@ class ExplorerServer(ThreadingHTTPServer):
     allow_reuse_address = True
     request_queue_size = LISTEN_BACKLOG
 
-    def __init__(self, address, *, h: float, ground: str, verbose: bool = False):
-        self.defaults = {"h": h, "ground": ground}
+    def __init__(self, address, *, h: float, ground: str, verbose: bool = False,
+                 disk=None):
+        self.defaults = {"h": h, "ground": ground, "disk": disk}
         self.verbose = verbose
         self._slots = threading.BoundedSemaphore(MAX_THREADS)
         host = address[0]
@@ -186,7 +189,7 @@ class ExplorerServer(ThreadingHTTPServer):
         host, port = self.server_address[:2]
         if ":" in host:
             host = f"[{host}]"
-        return f"http://{host}:{port}/?h={self.defaults['h']:g}&ground={self.defaults['ground']}"
+        return f"http://{host}:{port}/?h={self.defaults['h']!r}&ground={self.defaults['ground']}"
 
     def start_in_thread(self) -> threading.Thread:
         """Serve in a daemon thread (tests; stop with ``shutdown()`` then ``server_close()``)."""
@@ -220,7 +223,7 @@ def _checked(h, ground, host, port) -> tuple[float, str, str, int]:
 
 
 def make_server(h: float = 0.17, ground: str = "rough", host: str = "127.0.0.1",
-                port: int = 0, *, verbose: bool = False) -> ExplorerServer:
+                port: int = 0, *, verbose: bool = False, disk=None) -> ExplorerServer:
     """Bind the explorer's server (not yet serving).
 
     Parameters
@@ -234,6 +237,9 @@ def make_server(h: float = 0.17, ground: str = "rough", host: str = "127.0.0.1",
         TCP port in [0, 65535]; 0 picks a free one (``server.url`` tells which).
     verbose : bool
         Log every request on stderr.
+    disk : Disk, optional
+        A disk with a physical size (``--disk euro-1``): the steady motions of its ``h``
+        come with SI values beside the paper's.
 
     Returns
     -------
@@ -247,7 +253,9 @@ def make_server(h: float = 0.17, ground: str = "rough", host: str = "127.0.0.1",
         If the address cannot be bound (port in use).
     """
     h, ground, host, port = _checked(h, ground, host, port)
-    return ExplorerServer((host, port), h=h, ground=ground, verbose=verbose)
+    if disk is not None and getattr(disk, "radius", None) is None:
+        disk = None  # no physical size: the paper's units only
+    return ExplorerServer((host, port), h=h, ground=ground, verbose=verbose, disk=disk)
 
 
 def explore(h: float = 0.17, ground: str = "rough", host: str = "127.0.0.1", port: int = 0,

@@ -184,6 +184,13 @@ function showSteady() {
     cell.dataset.value = v === null ? "" : String(v);   // full precision (shortest round trip)
     if (!numeric) cell.dataset.kind = "text";
   }
+  if (s.si) {  // a disk with a physical size: SI beside the paper's units
+    for (const [label, v] of Object.entries(s.si)) {
+      const cell = add(label, fmt(v));
+      cell.dataset.field = "si:" + label;
+      cell.dataset.value = v === null ? "" : String(v);
+    }
+  }
   const rolls = s.mu_required <= mu();
   const cell = add(`Coulomb ground, \u03bc = ${mu().toFixed(2)}`, rolls ? "rolls" : "slides at once");
   cell.className = rolls ? "yes" : "no";
