@@ -45,8 +45,11 @@ def test_quasi_static_direction_is_the_fixed_point_of_the_slip_acceleration(seed
     cp, sp = math.cos(y[4]), math.sin(y[4])
     b = math.atan2(d[1], d[0]) + 0.05  # Newton's start: near it (as the slip is), not on it
     start = (math.cos(b), math.sin(b))
-    p = np.array([1.0, g.mu_k, g.mu_s, *g.coefficients, start[0] * cp - start[1] * sp,
-                  start[0] * sp + start[1] * cp, 1e-8, 1.0, 1.0, 0.0, 0.0, 0.0, 1e-8, 1e-3])
+    S = (start[0] * cp - start[1] * sp, start[0] * sp + start[1] * cp)  # inertial
+    y[2] += 1e-9 * S[0]  # a slip of 1e-9 along the start: Newton starts from u/|u|
+    y[3] += 1e-9 * S[1]
+    p = np.array([1.0, g.mu_k, g.mu_s, *g.coefficients, S[0], S[1], 1e-8, 1.0, 1.0, 0.0, 0.0,
+                  0.0, 1e-8, 1e-3])
     ex, ey, u_eps = fs.namespace()["_quasi_static_ref"](p, h, y, 1.0)
     assert u_eps == 1e-3 and math.hypot(ex, ey) == pytest.approx(1.0, abs=1e-14)
     e = np.array([ex * cp + ey * sp, -ex * sp + ey * cp])  # Cxyz

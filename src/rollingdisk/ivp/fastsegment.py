@@ -97,12 +97,10 @@ def _quasi_static_ref(p, h, y, sz):
     sp = math.sin(y[4])
     r_x = p[6] * cp + p[7] * sp  # ref in Cxyz
     r_y = -p[6] * sp + p[7] * cp
-    if n > p[8] and u_x * r_x + u_y * r_y >= 0.0:  # Newton from the slip's direction
+    if n > 0.0 and u_x * r_x + u_y * r_y >= 0.0:  # Newton from the slip's direction
         a = math.atan2(u_y, u_x)
     else:
         a = math.atan2(r_y, r_x)
-    a0 = a
-    ok = False
     for _ in range(8):
         f0 = _slip_parts(h, p[1], p[3], p[4], p[5], y, sz, False, a)[0]
         f1 = _slip_parts(h, p[1], p[3], p[4], p[5], y, sz, False, a + 1e-7)[0]
@@ -111,11 +109,7 @@ def _quasi_static_ref(p, h, y, sz):
         da = -f0 * 1e-7 / (f1 - f0)
         a += da
         if abs(da) < 1e-13:
-            ok = True
             break
-    # a root where the slip decelerates along e* (or none found): keep the start direction
-    if not ok or _slip_parts(h, p[1], p[3], p[4], p[5], y, sz, False, a)[1] <= 0.0:
-        a = a0
     e_x = math.cos(a)
     e_y = math.sin(a)
     return e_x * cp - e_y * sp, e_x * sp + e_y * cp, p[15]
