@@ -7,7 +7,11 @@
     for each contact phase with method="auto", which goes compiled once the compiled loop is
     loaded (the scipy run forces the scipy path by an infinite PY_BUDGET).
 
-Run: PYTHONPATH=src python benchmarks/coulomb.py [T]
+(c) with ``--euler``: Euler's disk on Coulomb ground (``euler-disk --friction coulomb``)
+    with the quasi-static micro-slip (u_qs = 1e-3); ``--euler-old`` also runs the full law
+    e = u/|u| (u_qs = 0: about 75 million steps, several minutes) and reports the ratio.
+
+Run: PYTHONPATH=src python benchmarks/coulomb.py [T] [--euler | --euler-old]
 """
 
 import json
@@ -38,7 +42,31 @@ def one_toss():
     return time.perf_counter() - t, r
 
 
-if __name__ == "__main__":
+def euler_toy(u_qs):
+    from rollingdisk.scenarios import euler_coulomb as ec
+    from rollingdisk.scenarios.euler_disk import EulerDisk, run_euler_disk
+
+    ec.QUASI_STATIC_SLIP = u_qs
+    t = time.perf_counter()
+    r = run_euler_disk(EulerDisk(friction="coulomb"), predict=False, max_wall_time=1e4,
+                       max_steps=10**9)
+    return {"u_qs": u_qs, "wall_s": round(time.perf_counter() - t, 2), "t_end": r.t_end,
+            "steps": r.n_steps, "transitions": len(r.extra["transitions"]),
+            "energy_balance": r.energy_balance}
+
+
+def euler_main(old):
+    fs.compiled()
+    runs = [euler_toy(1e-3)] + ([euler_toy(0.0)] if old else [])
+    out = {"euler_coulomb": runs}
+    if old:
+        out["ratio_old_over_new"] = round(runs[1]["wall_s"] / runs[0]["wall_s"], 1)
+    print(json.dumps(out, indent=1))
+
+
+if __name__ == "__main__" and {"--euler", "--euler-old"} & set(sys.argv):
+    euler_main("--euler-old" in sys.argv)
+elif __name__ == "__main__":
     T = float(sys.argv[1]) if len(sys.argv) > 1 else 200.0
     hy.PY_BUDGET = math.inf  # "auto" stays on the scipy path until fs is loaded
     ws, a = long_run("scipy", T)

@@ -145,7 +145,7 @@ def test_compiled_rhs_and_events_equal_the_python_kernels(ns, mode):
         want = run.rhs(mode)(0.0, y)
         c_roll, c_pivot, c_air = g.coefficients
         p = np.array([mode, g.mu_k, g.mu_s, c_roll, c_pivot, c_air, *run.ref, hy.U_EPS,
-                      run.sz, run.side, run.alpha_min, *run.rref, hy.W_EPS])
+                      run.sz, run.side, run.alpha_min, *run.rref, hy.W_EPS, 0.0])
         got = np.empty(14)
         ns["_rhs"](p, disk.h, y, got)
         assert np.allclose(got, want, rtol=1e-12, atol=1e-12)
@@ -164,7 +164,7 @@ def test_uncompiled_loop_takes_the_compiled_steps(ns):
     disk = rd.Disk(0.0)  # Coulomb(0.2): mu_k = mu_s = 0.2 in p0
     y0 = np.array([0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=float)
     p0 = np.array([1, 0.2, 0.2, 0, 0, 0, 1.0, 0.0, hy.U_EPS, 1.0, 1.0, 1e-8, 0.0, 0.0,
-                   hy.W_EPS])
+                   hy.W_EPS, 0.0])
     active = np.array([True, False, True, False, True, False])
     out = []
     for space in (ns, py):

@@ -49,7 +49,7 @@ from rollingdisk.model import coulomb as _cl
 
 #: Fields of the parameter array ``p`` of :func:`_rhs` and :func:`advance`, in order.
 P_FIELDS = ("mode", "mu_k", "mu_s", "c_roll", "c_pivot", "c_air", "ref_X", "ref_Y", "u_eps",
-            "sz", "side", "alpha_min", "rref_X", "rref_Y", "w_eps")
+            "sz", "side", "alpha_min", "rref_X", "rref_Y", "w_eps", "u_qs")
 _NP = len(P_FIELDS)
 N_STATE = 14
 N_EVENTS = 6
@@ -72,9 +72,47 @@ def _cc_solve(p, h, y):
             h, p[3], p[4], p[5], y, sz, p[12], p[13], p[14], rs)
         P0 = 0.0
     else:
+        ref_X, ref_Y, u_eps = p[6], p[7], p[8]
+        if p[15] > 0.0:
+            ref_X, ref_Y, u_eps = _quasi_static_ref(p, h, y, sz)
         d, F_x, F_y, F_z, P0, P1, P2, P3, L, Lx, Ly = _coulomb_sliding_full(  # noqa: F821
-            h, p[1], p[3], p[4], p[5], y, p[6], p[7], p[8], sz, p[12], p[13], p[14], rs)
+            h, p[1], p[3], p[4], p[5], y, ref_X, ref_Y, u_eps, sz, p[12], p[13], p[14], rs)
     return d, P0, P1, P2, P3, F_x, F_y, F_z, L, Lx, Ly
+
+
+def _quasi_static_ref(p, h, y, sz):
+    """``(ref_X, ref_Y, u_eps)`` for the sliding kernel with the quasi-static slip
+    direction (``p[15] = u_qs > 0``): below ``|u| = u_qs`` the friction direction is that of
+    ``sgn(u . e*) u + (u_qs - |u|) e*`` (:func:`rollingdisk.model.coulomb.
+    _friction_direction` with ``ref = e*``, ``u_eps = u_qs``), ``e*`` the direction in which
+    the slip accelerates along itself, ``e* x du/dt(e*) = 0`` (the fixed point the slip's
+    direction relaxes to at the rate ``mu g/|u|``; :func:`slip_scan`), found by Newton's
+    method on its angle from the slip's (or ``ref``'s) direction.  Above ``u_qs``: ``p``'s
+    own ``ref``, ``u_eps``."""
+    u_x, u_y = _slip_velocity(h, y)  # noqa: F821 - namespace
+    n = math.sqrt(u_x * u_x + u_y * u_y)
+    if n >= p[15]:
+        return p[6], p[7], p[8]
+    cp = math.cos(y[4])
+    sp = math.sin(y[4])
+    r_x = p[6] * cp + p[7] * sp  # ref in Cxyz
+    r_y = -p[6] * sp + p[7] * cp
+    if n > 0.0 and u_x * r_x + u_y * r_y >= 0.0:  # Newton from the slip's direction
+        a = math.atan2(u_y, u_x)
+    else:
+        a = math.atan2(r_y, r_x)
+    for _ in range(8):
+        f0 = _slip_parts(h, p[1], p[3], p[4], p[5], y, sz, False, a)[0]
+        f1 = _slip_parts(h, p[1], p[3], p[4], p[5], y, sz, False, a + 1e-7)[0]
+        if f1 == f0:
+            break
+        da = -f0 * 1e-7 / (f1 - f0)
+        a += da
+        if abs(da) < 1e-13:
+            break
+    e_x = math.cos(a)
+    e_y = math.sin(a)
+    return e_x * cp - e_y * sp, e_x * sp + e_y * cp, p[15]
 
 
 def _rhs(p, h, y, out):
@@ -154,7 +192,7 @@ def advance(p, h, t, y0, t_end, dt_try, rtol, atolv, max_step, max_steps, active
 
     Parameters
     ----------
-    p : ndarray, shape (15,)
+    p : ndarray, shape (16,)
         Parameters (:data:`P_FIELDS`); in sliding ``ref`` (``p[6:8]``) is set to ``U/|U|``
         after every stored step where ``|U| > u_eps``, with rolling resistance on and free
         ``rref`` (``p[12:14]``) to ``omega_h/|omega_h|`` where ``|omega_h| > w_eps`` (as the
@@ -446,12 +484,13 @@ _KERNELS = ("_inertia", "_geometry", "_coulomb_moments", "_coulomb_powers", "_om
             "_friction_direction", "_roll_direction", "_mode_moments", "_hold_h",
             "_rolling_response", "_rolling_roll_stuck_solve", "_sliding_roll_stuck_solve",
             "_coulomb_rolling_full", "_coulomb_sliding_full")
-_OWN = ("_cc_solve", "_rhs", "_rhs_col", "_cc_events", "_all_finite", "_vec_finite")
+_OWN = ("_slip_accel_c", "_slip_parts", "_quasi_static_ref", "_cc_solve", "_rhs", "_rhs_col",
+        "_cc_events", "_all_finite", "_vec_finite")
 _DOP = ("_combine", "_step", "_dense_tail", "_dense_coefficients", "_dense_value",
         "_error_norm_v", "_step_factor", "_rms", "_initial_step_scaled", "initial_step_v")
 _ROOTS = ("_illinois_converged", "_illinois_trial", "_illinois_update")
 NAMES = (_KERNELS + _OWN + _DOP + _ROOTS
-         + ("advance", "_slip_accel_c", "_slip_parts", "slip_scan", "_flight_height",
+         + ("advance", "slip_scan", "_flight_height",
             "touchdown_scan"))
 
 _compiled = None
@@ -502,7 +541,7 @@ def _probe_states():
         y[5] = 0.4 + 0.2 * rng.uniform()
         y[7:10] = rng.uniform(-1.0, 1.0, 3)
         p = np.array([float(mode), 0.4, 0.5, 0.01, 0.02, 0.003, 0.6, 0.8, 1e-8, -1.0, 1.0,
-                      1e-8, -0.8, 0.6, 1e-8])
+                      1e-8, -0.8, 0.6, 1e-8, 0.0])
         out.append((p, h, y))
     return out
 

@@ -44,6 +44,7 @@ stored points (thinning beyond it) bounds the memory.
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 from collections.abc import Callable, Sequence
@@ -55,13 +56,16 @@ import numpy as np
 from rollingdisk.engine.methods import check_method
 from rollingdisk.ivp import fastsegment as _fs
 from rollingdisk.ivp.simulation import _check_state
+from rollingdisk.ivp.slipdir import (  # noqa: F401 - _slip_accel: tests and docs use it here
+    _direction_scan,
+    _slip_accel,
+    _slip_direction,
+    slip_direction,
+)
 from rollingdisk.model import coulomb as _cl
 from rollingdisk.model.coulomb import MODE_NAMES, _check_coulomb, coulomb_contact
 from rollingdisk.model.disk import Disk
-from rollingdisk.model.equations import _check_disk
-from rollingdisk.model.geometry import _geometry
 from rollingdisk.model.ground import Coulomb
-from rollingdisk.model.state import _as_state
 from rollingdisk.results.trajectory import Trajectory, Transition
 from rollingdisk.util.checks import check_real, check_span, real_array
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
@@ -84,91 +88,6 @@ STICK_TOL = 1e-6
 #: ``|omega_h|`` below which the rolling resistance keeps its reference direction (as
 #: :data:`U_EPS` for the slip).
 W_EPS = 1e-8
-
-
-def _slip_accel(h, mu_k, coeffs, y, e_x, e_y, sz=None):
-    """Slip acceleration ``du/dt`` (Cxyz) at a state with ``u = 0``, sliding with friction
-    ``-mu_k F_z e`` (``e`` in Cxyz): eq. (6) differentiated along (8), (9), (11).  ``sz``:
-    the pivot state (+1, -1, or 0 stuck; ``None``: ``sgn(omega_z)``)."""
-    theta, w1, w2, w3 = y[5], y[7], y[8], y[9]
-    ht, s, c, p, y_P, z_P = _geometry(h, theta)
-    if sz is None:
-        M = _cl._coulomb_moments(*coeffs, theta, w1, w2, w3)
-        d1, d2, d3, F_x, F_y, F_z = _cl._sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3,
-                                                       *M)
-    else:
-        M = _cl._pivot_moments(*coeffs, theta, w1, w2, w3, sz)
-        solve = _cl._sliding_stuck_solve if sz == 0.0 else _cl._sliding_solve
-        d1, d2, d3, F_x, F_y, F_z = solve(h, mu_k, e_x, e_y, theta, w1, w2, w3, *M)[:6]
-    Om = w3 / c
-    v_Cx = w2 - ht * w3  # u = 0
-    v_Cy = w1 * z_P
-    dv_Cx = F_x + v_Cy * Om  # eq. (8)_1: rate of the Cxyz component
-    dv_Cy = F_y - v_Cx * Om  # eq. (8)_2
-    # u_x = v_Cx - w2 + h~ w3, u_y = v_Cy - w1 z_P; d z_P/d theta = y_P; at u = 0 the
-    # turning of Cxyz adds nothing to du/dt
-    return dv_Cx - d2 + ht * d3, dv_Cy - d1 * z_P - w1 * w1 * y_P
-
-
-def slip_direction(disk: Disk, ground: Coulomb, y) -> tuple[float, float] | None:
-    """The direction in which a rolling disk at state ``y`` (``u = 0``) starts to slide.
-
-    The unit vector ``d`` (Cxyz components) such that, sliding with friction
-    ``-mu_k F_z d``, the slip acceleration ``du/dt`` is along ``+d`` (so that the slip
-    grows in the direction friction assumed).  Found by scanning the angle of ``d`` and
-    ``brentq`` on ``d x du/dt = 0``; among the roots with ``d . du/dt > 0`` the one of
-    largest slip acceleration.  ``None`` if there is none (the disk can keep rolling).
-    """
-    h = _check_disk(disk).h
-    mu_k = _check_coulomb(ground).mu_k
-    return _slip_direction(h, mu_k, ground.coefficients, _as_state("smooth", y))
-
-
-def _slip_direction(h, mu_k, coeffs, y, sz=None):
-    """:func:`slip_direction` with the pivot state ``sz`` of :func:`_slip_accel`.  Once the
-    compiled Coulomb loop is loaded, the same scan runs compiled
-    (:func:`rollingdisk.ivp.fastsegment.slip_scan`; roots by bisection to round-off
-    instead of ``brentq`` to 1e-15: the two agree to about 1e-15)."""
-    if _fs.loaded():
-        a = _fs.compiled()["slip_scan"](
-            float(h), float(mu_k), float(coeffs[0]), float(coeffs[1]), float(coeffs[2]),
-            np.ascontiguousarray(y[:10], dtype=float), 0.0 if sz is None else float(sz),
-            sz is None, 145)
-        return None if a != a else (math.cos(a), math.sin(a))
-
-    def parts(a):
-        ex, ey = math.cos(a), math.sin(a)
-        ax, ay = _slip_accel(h, mu_k, coeffs, y, ex, ey, sz)
-        return ex * ay - ey * ax, ex * ax + ey * ay
-
-    a = _direction_scan(parts)
-    return None if a is None else (math.cos(a), math.sin(a))
-
-
-def _direction_scan(parts):
-    """The angle ``a`` of the direction ``d = (cos a, sin a)`` in which a rate starts to
-    grow along ``+d`` from 0: ``parts(a)`` gives ``(d x rate, d . rate)``; a scan of 144
-    intervals, ``brentq`` on ``d x rate = 0`` in each sign change, and among the roots
-    with ``d . rate > 0`` the one of largest rate.  ``None`` if there is none.  (The slip
-    direction at a rolling -> sliding transition, and the direction in which the rolling
-    resistance lets ``omega_h`` go.)"""
-    from scipy.optimize import brentq
-
-    grid = np.linspace(0.0, 2.0 * math.pi, 145)
-    vals = [parts(a)[0] for a in grid]
-    best = None
-    for i in range(grid.size - 1):
-        f0, f1 = vals[i], vals[i + 1]
-        if f0 == 0.0:
-            a = grid[i]
-        elif f0 * f1 < 0.0:
-            a = brentq(lambda x: parts(x)[0], grid[i], grid[i + 1], xtol=1e-15, rtol=8.9e-16)
-        else:
-            continue
-        along = parts(a)[1]
-        if along > 0.0 and (best is None or along > best[1]):
-            best = (a, along)
-    return None if best is None else best[0]
 
 
 def energy_balance(traj: Trajectory) -> float:
@@ -220,6 +139,7 @@ class _Run:
         self.sz = 1.0  # sgn(omega_z) on the segment (pivot not stuck)
         self.rref = (0.0, 0.0)  # inertial direction of omega_h (rolling resistance)
         self.n_rhs = 0
+        self.u_qs = 0.0  # simulate_coulomb's quasi_static_slip
 
     def pivot_state(self, mode):
         """``sz`` of the kernels: 0 while the pivot sticks, else the segment's sign."""
@@ -235,8 +155,13 @@ class _Run:
             dy, F_x, F_y, F_z, P1, P2, P3, L, Lx, Ly = _cl._coulomb_rolling_full(
                 h, *cf, z, sz, rx, ry, w_eps, rs)
             return dy, F_x, F_y, F_z, 0.0, P1, P2, P3, L, Lx, Ly
-        return _cl._coulomb_sliding_full(h, self.g.mu_k, *cf, z, self.ref[0], self.ref[1],
-                                         self.u_eps, sz, rx, ry, w_eps, rs)
+        ref_X, ref_Y, u_eps = self.ref[0], self.ref[1], self.u_eps
+        if self.u_qs > 0.0:
+            p = np.array([mode, self.g.mu_k, self.g.mu_s, *cf, ref_X, ref_Y, u_eps, sz, 0.0,
+                          0.0, 0.0, 0.0, 0.0, self.u_qs])
+            ref_X, ref_Y, u_eps = _quasi_static_ref()(p, h, z, sz)
+        return _cl._coulomb_sliding_full(h, self.g.mu_k, *cf, z, ref_X, ref_Y, u_eps, sz, rx,
+                                         ry, w_eps, rs)
 
     def rhs(self, mode):
         def f(t, z):
@@ -273,6 +198,13 @@ class _Run:
             roll = W_X * self.rref[0] + W_Y * self.rref[1]
         return [end, pivot, F_z, theta * self.side if self.h > 0 else 1.0,
                 0.5 * math.pi - abs(theta) - self.alpha_min, roll]
+
+
+@functools.cache
+def _quasi_static_ref():
+    """:func:`rollingdisk.ivp.fastsegment._quasi_static_ref`, uncompiled (the scipy and
+    LSODA paths)."""
+    return _fs.namespace()["_quasi_static_ref"]
 
 
 def _DOP853():
@@ -347,7 +279,7 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
                      max_points: int = DEFAULT_MAX_POINTS,
                      slip_tol: float = 1e-12, alpha_min: float = 1e-8, guards: bool = True,
                      progress: Callable[[float], None] | None = None,
-                     method: str = "auto") -> Trajectory:
+                     method: str = "auto", quasi_static_slip: float = 0.0) -> Trajectory:
     """Integrate the disk on Coulomb ground: rolling and sliding with located transitions.
 
     Parameters
@@ -404,6 +336,13 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         compiled (at once if the loop is loaded) where numba is installed.  ``"scipy"`` and
         ``"dop853"`` take the same steps and locate events the same way: transitions agree
         to about 1e-10.
+    quasi_static_slip : float
+        Slip speed ``u_qs >= 0`` (units ``sqrt(a g)``) below which the sliding friction
+        takes the quasi-static slip direction ``e*`` (``e* x du/dt(e*) = 0``, the direction
+        the slip's own relaxes to at the rate ``mu g/|u|``), blended continuously into
+        ``u/|u|`` at ``|u| = u_qs``; ``|F_t| = mu_k F_z`` as before.  0 (default): off,
+        ``e = u/|u|``.  For long micro-slip at the edge of the friction cone, where that
+        relaxation makes DOP853's steps proportional to ``|u|`` (docs/friction.md).
 
     Returns
     -------
@@ -422,7 +361,8 @@ def simulate_coulomb(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
     y, (t0, t1), options = _check_arguments(
         disk, ground, t_span, y0, rtol=rtol, atol=atol, max_step=max_step,
         max_steps=max_steps, max_transitions=max_transitions, max_wall_time=max_wall_time,
-        max_points=max_points, slip_tol=slip_tol, alpha_min=alpha_min)
+        max_points=max_points, slip_tol=slip_tol, alpha_min=alpha_min,
+        quasi_static_slip=quasi_static_slip)
     method = check_method(method, METHODS)
     if method == "dop853" and not _fs.available():
         raise ParameterError("method='dop853' needs numba (pip install numba)")
@@ -453,6 +393,7 @@ def _check_arguments(disk, ground, t_span, y0, **options):
     if o["max_step"] != math.inf:
         o["max_step"] = check_real("max_step", o["max_step"], low=0.0, low_open=True)
     o["slip_tol"] = check_real("slip_tol", o["slip_tol"], low=0.0)
+    o["quasi_static_slip"] = check_real("quasi_static_slip", o["quasi_static_slip"], low=0.0)
     o["alpha_min"] = check_real("alpha_min", o["alpha_min"], low=0.0, high=0.5 * math.pi,
                                 high_open=True)
     o["max_wall_time"] = check_real("max_wall_time", o["max_wall_time"], low=0.0,
@@ -524,6 +465,7 @@ class _Hybrid:
         self.o = options
         self.guards, self.progress = guards, progress
         self.run = _Run(disk, ground, options["alpha_min"])
+        self.run.u_qs = options["quasi_static_slip"]
         self.transitions: list[Transition] = []
         self.points = _Points(options["max_points"])
         self.status, self.message, self.t_event = "completed", "", None
@@ -706,7 +648,7 @@ class _Hybrid:
         c_roll, c_pivot, c_air = run.coeffs
         p = np.array([mode, g.mu_k, g.mu_s, c_roll, c_pivot, c_air, run.ref[0], run.ref[1],
                       run.u_eps, run.sz, run.side, run.alpha_min, run.rref[0], run.rref[1],
-                      W_EPS], dtype=float)
+                      W_EPS, o.get("quasi_static_slip", 0.0)], dtype=float)
         atolv = np.full(self.z.shape[0], float(o["atol"]))
         edge = self.h > 0 and self.guards
         active = np.array(_active(run, mode, edge, self.guards), dtype=np.bool_)

@@ -57,7 +57,8 @@ class _CoulombToyRun:
             Disk(toy.h), self.ground(), (0.0, self.t_max), y0, rtol=self.rtol,
             atol=self.atol, max_steps=max_steps, max_transitions=max_steps,
             max_wall_time=max(max_wall_time - (time.monotonic() - self.start), 1e-3),
-            max_points=COULOMB_POINTS, alpha_min=self.alpha_end, progress=report)
+            max_points=COULOMB_POINTS, alpha_min=self.alpha_end, progress=report,
+            quasi_static_slip=QUASI_STATIC_SLIP)
         self.traj, self.n = tr, tr.n_steps
         Y = tr.y
         cp, sp = np.cos(Y[4]), np.sin(Y[4])
@@ -91,3 +92,9 @@ class _CoulombToyRun:
 #: Most points :class:`_CoulombToyRun` stores (every k-th step beyond, and every
 #: transition): a run through micro-slip takes millions of steps.
 COULOMB_POINTS = 400_000
+
+
+#: Slip speed (units sqrt(a g)) below which the friction takes the quasi-static slip direction
+#: (``simulate_coulomb(quasi_static_slip=...)``, docs/friction.md): the toy's micro-slip
+#: (1e-8 to 2e-4) lies below it.
+QUASI_STATIC_SLIP = 1e-3
