@@ -228,7 +228,7 @@ def test_every_package_init_only_names_its_exports():
 #: The limits of docs/architecture.md.  Modules still over them are listed with their size
 #: today: the list may only shrink (a module that falls under its limit must leave it).
 MODULE_LINES = 700
-NOT_YET_SPLIT = {"rollingdisk.ivp.hybrid": 1139, "rollingdisk.phases.motion": 780,
+NOT_YET_SPLIT = {"rollingdisk.ivp.hybrid": 1081, "rollingdisk.phases.motion": 780,
                  "rollingdisk.phases.impact": 797}
 TABLES = ("rollingdisk.engine.dop853_coefficients",)  # coefficient tables: data, not code
 
@@ -279,7 +279,7 @@ def test_no_private_name_imported_across_subpackages():
 
 #: What is left is imported by the Coulomb loop (ivp/hybrid.py, ivp/fastsegment.py) and
 #: phases/impact.py: the model's kernels and the root finder under their private names.
-PRIVATE_CROSSINGS = 7
+PRIVATE_CROSSINGS = 0
 
 
 def test_no_package_name_is_also_one_of_its_submodules():

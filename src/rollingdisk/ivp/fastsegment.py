@@ -41,9 +41,13 @@ import numpy as np
 
 from rollingdisk.engine import dop853 as _dop
 from rollingdisk.engine.roots import (
-    _illinois_converged,
-    _illinois_trial,
-    _illinois_update,
+    illinois_converged as _illinois_converged,
+)
+from rollingdisk.engine.roots import (
+    illinois_trial as _illinois_trial,
+)
+from rollingdisk.engine.roots import (
+    illinois_update as _illinois_update,
 )
 from rollingdisk.model import coulomb as _cl
 

@@ -63,7 +63,7 @@ from rollingdisk.ivp.slipdir import (  # noqa: F401 - _slip_accel: tests and doc
     slip_direction,
 )
 from rollingdisk.model import coulomb as _cl
-from rollingdisk.model.coulomb import MODE_NAMES, _check_coulomb, coulomb_contact
+from rollingdisk.model.coulomb import MODE_NAMES, check_coulomb, coulomb_contact
 from rollingdisk.model.disk import Disk
 from rollingdisk.model.ground import Coulomb
 from rollingdisk.results.trajectory import Trajectory, Transition
@@ -384,7 +384,7 @@ def _check_arguments(disk, ground, t_span, y0, **options):
     if not isinstance(disk, Disk):
         raise ParameterTypeError(f"disk must be a rollingdisk.Disk, got {type(disk).__name__} "
                                  f"{disk!r}")
-    _check_coulomb(ground)
+    check_coulomb(ground)
     y = _check_state(disk, "smooth", real_array("y0", y0))
     t0, t1 = check_span(t_span)
     o = dict(options)

@@ -24,7 +24,7 @@ def _slip_accel(h, mu_k, coeffs, y, e_x, e_y, sz=None):
     ``-mu_k F_z e`` (``e`` in Cxyz): eq. (6) differentiated along (8), (9), (11).  ``sz``:
     the pivot state (+1, -1, or 0 stuck; ``None``: ``sgn(omega_z)``)."""
     theta, w1, w2, w3 = y[5], y[7], y[8], y[9]
-    ht, s, c, p, y_P, z_P = _geo._geometry(h, theta)
+    ht, s, c, p, y_P, z_P = _geo.contact_geometry(h, theta)
     if sz is None:
         M = _cl._coulomb_moments(*coeffs, theta, w1, w2, w3)
         d1, d2, d3, F_x, F_y, F_z = _cl._sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3,
@@ -52,9 +52,9 @@ def slip_direction(disk: Disk, ground: Coulomb, y) -> tuple[float, float] | None
     ``brentq`` on ``d x du/dt = 0``; among the roots with ``d . du/dt > 0`` the one of
     largest slip acceleration.  ``None`` if there is none (the disk can keep rolling).
     """
-    h = _eq._check_disk(disk).h
-    mu_k = _cl._check_coulomb(ground).mu_k
-    return _slip_direction(h, mu_k, ground.coefficients, _st._as_state("smooth", y))
+    h = _eq.check_disk(disk).h
+    mu_k = _cl.check_coulomb(ground).mu_k
+    return _slip_direction(h, mu_k, ground.coefficients, _st.as_state("smooth", y))
 
 
 def _slip_direction(h, mu_k, coeffs, y, sz=None):

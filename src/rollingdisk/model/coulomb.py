@@ -453,7 +453,7 @@ def _coulomb_sliding_full(h, mu_k, c_roll, c_pivot, c_air, y, ref_X, ref_Y, u_ep
 
 
 # ------------------------------------------------------------------- public wrappers
-def _check_coulomb(ground, name: str = "ground"):
+def check_coulomb(ground, name: str = "ground"):
     """``ground`` if it is a :class:`Coulomb` value; a ground's name (``"rough"``) is the
     wrong value (:class:`ParameterError`), anything else the wrong type."""
     if not isinstance(ground, Coulomb):
@@ -461,6 +461,9 @@ def _check_coulomb(ground, name: str = "ground"):
         raise error(f"{name} must be a rollingdisk.Coulomb(...) value here, got "
                     f"{type(ground).__name__} {ground!r}")
     return ground
+
+
+_check_coulomb = check_coulomb  # the name this module's kernels use
 
 
 def _check_mode(mode) -> int:
