@@ -140,7 +140,7 @@ def test_animation_clock_has_its_unit(trajectories):
         fig = Figure()
         tf, draw = _scene(trajectories[name], fig, 2, None)
         draw(1)
-        title = fig.axes[0].get_title()
+        title = fig.texts[0].get_text()  # the title above the 3D axes, with the clock
         assert title.endswith(unit), title
         if name == "coin":
             shown = float(title.split("t =")[1].split()[0])
