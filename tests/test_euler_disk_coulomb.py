@@ -43,9 +43,14 @@ def test_inside_the_cone_it_rolls_to_the_end_without_slip():
 
 
 @pytest.mark.slow
-def test_creep_runs_approach_the_coulomb_end_time_as_k_grows():
+def test_creep_runs_approach_the_coulomb_end_time_as_k_grows(monkeypatch):
     """mu = 1: rolling until the cone is left, then micro-slip (rolling <-> sliding) to the
-    fall; the creep law's end time for k = 1e3, 1e4, 1e5 moves monotonically onto it."""
+    fall; the creep law's end time for k = 1e3, 1e4, 1e5 moves monotonically onto it.  The
+    limit is the full set-valued law: the toy's quasi-static micro-slip (an approximation
+    of it, docs/friction.md) is switched off here."""
+    from rollingdisk.scenarios import euler_coulomb
+
+    monkeypatch.setattr(euler_coulomb, "QUASI_STATIC_SLIP", 0.0)
     c = run_euler_disk(EulerDisk(mu=1.0, friction="coulomb", **LOW), predict=False,
                        max_steps=10**7, max_wall_time=300)
     assert (c.status, c.end) == ("completed", "fell-flat")

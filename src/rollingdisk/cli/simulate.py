@@ -138,6 +138,10 @@ def configure(sub):
     return p
 
 
+#: Most points a run from a steady motion samples for its measured frequency.
+SAMPLES_MAX = 1_000_000
+
+
 def run(args) -> int:
     from rollingdisk.util.files import check_writable
 
@@ -230,7 +234,10 @@ def _run_ideal(args, disk, motion) -> dict:
         varpi2 = rd.stability(motion).varpi2
         if math.isfinite(varpi2) and varpi2 != 0.0:
             dt = 0.05 / math.sqrt(abs(varpi2))
-            options["t_eval"] = np.append(np.arange(0.0, args.t_end, dt), args.t_end)
+            if args.t_end / dt <= SAMPLES_MAX:
+                options["t_eval"] = np.append(np.arange(0.0, args.t_end, dt), args.t_end)
+            else:  # too many samples to hold: bound the step instead (the step budget
+                options["max_step"] = dt  # then ends the run with its own status)
     bar = progress_bar(args)
     csv_cm = (atomic_file(args.out, "w", newline="") if args.out is not None
               else contextlib.nullcontext())

@@ -95,6 +95,8 @@ COULOMB_POINTS = 400_000
 
 
 #: Slip speed (units sqrt(a g)) below which the friction takes the quasi-static slip direction
-#: (``simulate_coulomb(quasi_static_slip=...)``, docs/friction.md): the toy's micro-slip
-#: (1e-8 to 2e-4) lies below it.
-QUASI_STATIC_SLIP = 1e-3
+#: (``simulate_coulomb(quasi_static_slip=...)``, docs/friction.md).  0: the full set-valued
+#: law.  1e-3 (below which the toy's micro-slip, 1e-8 to 2e-4, lies) runs the commercial toy
+#: in 1.38 M steps instead of 75 M, but a low disk (alpha0 = 0.1, mu = 1, c = 0.01) does not
+#: finish with it within 300 s: off until it is robust.
+QUASI_STATIC_SLIP = 0.0
