@@ -44,6 +44,27 @@ def _anywidget():
     return anywidget, traitlets
 
 
+_VIEW = []
+
+
+def _view_class():
+    """The widget class with the view's traits (made once, on first use: anywidget is an
+    optional dependency)."""
+    if not _VIEW:
+        anywidget, traitlets = _anywidget()
+
+        class DiskView(anywidget.AnyWidget):
+            _esm = ESM_PATH
+            disk = traitlets.Dict().tag(sync=True)
+            map = traitlets.Dict().tag(sync=True)
+            selected = traitlets.List([]).tag(sync=True)
+            motion = traitlets.Dict().tag(sync=True)
+            frames = traitlets.Dict().tag(sync=True)
+
+        _VIEW.append(DiskView)
+    return _VIEW[0]
+
+
 def _disk(disk):
     import rollingdisk as rd
 
@@ -142,14 +163,7 @@ def widget(disk="euro-1", ground: str = "rough"):
         raise ParameterError(f"ground must be 'rough' or 'smooth', got {ground!r}")
     d = _disk(disk)
 
-    class DiskExplorer(anywidget.AnyWidget):
-        _esm = ESM_PATH
-        disk = traitlets.Dict().tag(sync=True)
-        map = traitlets.Dict().tag(sync=True)
-        selected = traitlets.List([]).tag(sync=True)
-        motion = traitlets.Dict().tag(sync=True)
-        frames = traitlets.Dict().tag(sync=True)
-
+    class DiskExplorer(_view_class()):
         @traitlets.observe("selected")
         def _on_select(self, change):
             sel = change["new"]
@@ -201,12 +215,4 @@ def play(result, n_frames: int = 120):
         raise ParameterTypeError(f"result must be a Trajectory or a MotionResult, got "
                                  f"{type(result).__name__}")
 
-    class MotionPlayer(anywidget.AnyWidget):
-        _esm = ESM_PATH
-        disk = traitlets.Dict().tag(sync=True)
-        map = traitlets.Dict().tag(sync=True)
-        selected = traitlets.List([]).tag(sync=True)
-        motion = traitlets.Dict().tag(sync=True)
-        frames = traitlets.Dict().tag(sync=True)
-
-    return MotionPlayer(disk=_disk_record(disk), frames=frames)
+    return _view_class()(disk=_disk_record(disk), frames=frames)
