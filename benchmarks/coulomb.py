@@ -20,6 +20,7 @@ import sys
 import time
 
 import rollingdisk as rd
+from rollingdisk.ivp import coulomb_driver as cd
 from rollingdisk.ivp import fastsegment as fs
 from rollingdisk.ivp import hybrid as hy
 from rollingdisk.scenarios.toss import toss
@@ -68,7 +69,7 @@ if __name__ == "__main__" and {"--euler", "--euler-old"} & set(sys.argv):
     euler_main("--euler-old" in sys.argv)
 elif __name__ == "__main__":
     T = float(sys.argv[1]) if len(sys.argv) > 1 else 200.0
-    hy.PY_BUDGET = math.inf  # "auto" stays on the scipy path until fs is loaded
+    cd.PY_BUDGET = math.inf  # "auto" stays on the scipy path until fs is loaded
     ws, a = long_run("scipy", T)
     wt_s, ta = one_toss()
     t = time.perf_counter()

@@ -4,12 +4,12 @@
 free or stuck, rolling resistance free or stuck, :mod:`rollingdisk.model.coulomb`) with
 the step-size control of :func:`rollingdisk.engine.dop853.integrate` (scipy's), and
 after each step evaluates the six event functions of
-:meth:`rollingdisk.ivp.hybrid._Run.events` -- mode end, pivot, lift-off ``F_z``
+:meth:`rollingdisk.ivp.coulomb_modes._Run.events` -- mode end, pivot, lift-off ``F_z``
 (eq. 11), edge contact ``theta side``, fell flat ``pi/2 - |theta| - alpha_min``, roll --
 on the step's dense output at the 9 points the hybrid driver samples
-(:func:`rollingdisk.ivp.hybrid._first_event`).  Steps where none crosses from ``> 0``
+(:func:`rollingdisk.ivp.coulomb_modes._first_event`).  Steps where none crosses from ``> 0``
 to ``<= 0`` are stored and the loop goes on (in sliding the slip reference is updated as
-:meth:`rollingdisk.ivp.hybrid._Hybrid._accept` does); at a step where one does, the
+:meth:`rollingdisk.ivp.coulomb_driver._Hybrid._accept` does); at a step where one does, the
 loop returns that step (start, length, dense coefficients) and the Python driver locates
 the event on it (``brentq``) and handles the transition as before.
 
@@ -65,7 +65,7 @@ RUNNING, COMPLETED, EVENT, FAILED, SINGULAR = 0, 1, 2, 3, 4
 # ------------------------------------------------------------------ right-hand side, events
 def _cc_solve(p, h, y):
     """The mode ``p[0]``'s kernel at ``y``: ``(dy[0:10], P_slip, P_roll, P_pivot, P_air,
-    F_x, F_y, F_z, M_piv, M_hx, M_hy)`` (as :meth:`rollingdisk.ivp.hybrid._Run.solve`)."""
+    F_x, F_y, F_z, M_piv, M_hx, M_hy)`` (as :meth:`rollingdisk.ivp.coulomb_modes._Run.solve`)."""
     mode = int(p[0])
     sz = p[9]
     if mode & 2:
@@ -143,7 +143,7 @@ def _rhs_col(p, h, y, K, s):
 
 
 def _cc_events(p, h, y, g):
-    """The event functions of :meth:`rollingdisk.ivp.hybrid._Run.events` into ``g``
+    """The event functions of :meth:`rollingdisk.ivp.coulomb_modes._Run.events` into ``g``
     (6), each crossing from ``> 0`` to ``<= 0``: mode end (rolling: ``mu_s F_z - |F_t|``;
     sliding: ``U . ref``), pivot (``sz omega_z``, or ``c F_z - |M_piv|`` while stuck),
     ``F_z``, ``theta side`` (1 for ``h = 0``), ``pi/2 - |theta| - alpha_min``, roll

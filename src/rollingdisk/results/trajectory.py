@@ -172,7 +172,7 @@ class Trajectory:
 
     @cached_property
     def _F(self):
-        # ideal grounds; a Coulomb run is a rollingdisk.ivp.hybrid.CoulombTrajectory,
+        # ideal grounds; a Coulomb run is a rollingdisk.ivp.coulomb_driver.CoulombTrajectory,
         # which takes each point's force from its mode
         return contact_force(self.disk, self.ground, self.y)
 
