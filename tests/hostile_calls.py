@@ -24,7 +24,8 @@ import rollingdisk as rd
 #: The public subpackages (and modules) whose every public name is driven.
 MODULES = ("rollingdisk", "rollingdisk.sweep", "rollingdisk.plotting",
            "rollingdisk.theory.exact", "rollingdisk.scenarios.euler_disk",
-           "rollingdisk.scenarios.toss", "rollingdisk.phases.impact",
+           "rollingdisk.scenarios.toss", "rollingdisk.phases.flight",
+           "rollingdisk.phases.impact",
            "rollingdisk.phases.motion", "rollingdisk.results", "rollingdisk.model")
 
 LONG_NAME = "a" * 300
@@ -253,12 +254,14 @@ def calls() -> dict:
                                              "results": "toss.jsonl"}),
             "energy_barrier": ((0.17,), {}),
         },
-        "rollingdisk.phases.impact": {
+        "rollingdisk.phases.flight": {
             "free_flight": ((disk, free, 0.1), {}),
             "free_energy": ((disk, free), {}),
             "angular_momentum": ((disk, free), {"about": [0.0, 0.0, 0.0]}),
             "lowest_point": ((disk, free), {"tol": 1e-12}),
             "touchdown_time": ((disk, free), {"inside_tol": 1e-12}),
+        },
+        "rollingdisk.phases.impact": {
             "contact_delassus": ((disk, 0.3), {"side": 1, "cos_sign": 1}),
             "impact": ((disk, falling, f["CONTACT"], 0.5, 0.3), {"mode_tol": 1e-9}),
             "rim_change_ratio": ((0.17,), {}),

@@ -2,7 +2,7 @@
 
 Sources of truth: Euler's equations of the torque-free axisymmetric body with the inertia of
 eq. (10), solved in sympy (the precession (H1) and the flip rate (H2)); the library's own
-free flight (:func:`rollingdisk.phases.impact.free_flight`, rotation matrices, no precession
+free flight (:func:`rollingdisk.phases.flight.free_flight`, rotation matrices, no precession
 formula); the time the normal spends up, measured by root finding on the flight; the law of
 Diaconis, Holmes & Montgomery (SIAM Rev. 49 (2007) 211), ``1/2 + arcsin(cot^2 psi)/pi``;
 binomial statistics for the ensembles.
@@ -20,7 +20,7 @@ from scipy.optimize import brentq
 
 import rollingdisk as rd
 from rollingdisk.cli.app import main
-from rollingdisk.phases.impact import angular_momentum, free_flight
+from rollingdisk.phases.flight import angular_momentum, free_flight
 from rollingdisk.scenarios import hand_toss as ht
 from rollingdisk.util.errors import ParameterError
 

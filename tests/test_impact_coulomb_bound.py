@@ -2,7 +2,7 @@
 
 Sources of truth: the Coulomb cone itself (``|Lam_T| <= mu Lam_N``, ``Lam_N >= 0``), checked
 on the impulse the law returns, and the energy of the free body before and after
-(:func:`rollingdisk.phases.impact.free_energy`, which knows nothing of the law): no impact
+(:func:`rollingdisk.phases.flight.free_energy`, which knows nothing of the law): no impact
 creates energy.  The check inside the law is shown to refuse a broken impulse instead of
 passing it on.
 """

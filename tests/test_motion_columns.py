@@ -19,7 +19,7 @@ import pytest
 import rollingdisk as rd
 from rollingdisk.cli.app import main
 from rollingdisk.phases.columns import motion_columns, write_motion_csv
-from rollingdisk.phases.impact import FREE_STATE
+from rollingdisk.phases.flight import FREE_STATE
 from rollingdisk.phases.motion import FlatSegment, FlightSegment, simulate_to_rest
 from rollingdisk.util.errors import ParameterTypeError
 

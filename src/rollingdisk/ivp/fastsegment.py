@@ -436,18 +436,18 @@ def slip_scan(h, mu_k, c_roll, c_pivot, c_air, y, sz, sz_free, n_grid):
 # ------------------------------------------------------------------ touchdown
 def _flight_height(Z0, VZ0, par, per, crs, Om_p, h, t):
     """Height of the lowest point of the freely flying disk at ``t``
-    (:func:`rollingdisk.phases.impact.touchdown_time`: the axis precesses uniformly)."""
+    (:func:`rollingdisk.phases.flight.touchdown_time`: the axis precesses uniformly)."""
     ez = par + per * math.cos(Om_p * t) + crs * math.sin(Om_p * t)
     ez = min(1.0, max(-1.0, ez))
     return Z0 + VZ0 * t - 0.5 * t * t - math.sqrt(1.0 - ez * ez) - h * abs(ez)
 
 
 def touchdown_scan(Z0, VZ0, par, per, crs, Om_p, h, t, Ht):
-    """The conservative advancement of :func:`rollingdisk.phases.impact.touchdown_time`
+    """The conservative advancement of :func:`rollingdisk.phases.flight.touchdown_time`
     from ``t`` (height ``Ht > 0``), compiled; a bracketed root is refined by the Illinois
     rule (:mod:`rollingdisk.engine.roots`) to round-off.  ``-1`` if no bracket is found
     in 100000 advances (a grazing flight: the caller scans a grid).  Plain Python too: the
-    one advancement of :func:`~rollingdisk.phases.impact.touchdown_time`, compiled or not."""
+    one advancement of :func:`~rollingdisk.phases.flight.touchdown_time`, compiled or not."""
     spin = Om_p * (1.0 + h)
     for _ in range(100000):
         B = max(0.0, -(VZ0 - t)) + spin

@@ -168,7 +168,7 @@ def check_disk(disk) -> Disk:
     return disk
 
 
-_check_disk = check_disk  # the name model.coulomb, ivp.hybrid and phases.impact import
+_check_disk = check_disk  # the name model.coulomb, ivp and phases import
 
 
 def equations_of_motion(disk: Disk, ground: str) -> Callable[[float, np.ndarray], np.ndarray]:

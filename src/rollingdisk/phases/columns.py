@@ -3,12 +3,12 @@
 A :class:`~rollingdisk.phases.motion.MotionResult` is a chain of segments, each with its
 own state (a Coulomb trajectory on a rim edge, the closed-form flight, the flat disk's
 speed and spin, the line states on the tread).  :func:`motion_columns` writes them all in
-one layout, the free-body state :data:`~rollingdisk.phases.impact.FREE_STATE` with the
+one layout, the free-body state :data:`~rollingdisk.phases.flight.FREE_STATE` with the
 time, the phase and the total energy, so that a run of several phases is one table
 (``rollingdisk simulate --until-rest --out F.csv``); :func:`write_motion_csv` writes it.
 
 Rows: every stored point of a contact, line or flat segment, ``flight_samples`` evenly
-spaced points of each flight (its closed form, :func:`~rollingdisk.phases.impact.free_flight`)
+spaced points of each flight (its closed form, :func:`~rollingdisk.phases.flight.free_flight`)
 and a last row at ``t_end`` with the final state.  A segment's last row and the next one's
 first share their time (the phase changes there; an impact changes the velocities).
 """
@@ -20,7 +20,7 @@ import csv
 import numpy as np
 
 from rollingdisk.model.coulomb import MODE_NAMES
-from rollingdisk.phases.impact import FREE_STATE
+from rollingdisk.phases.flight import FREE_STATE
 from rollingdisk.phases.line_contact import MODE_NAMES as LINE_MODES
 from rollingdisk.phases.line_contact import LineSegment
 from rollingdisk.phases.motion import (
@@ -121,7 +121,7 @@ def _segment_rows(h: float, seg, flight_samples: int):
 def motion_columns(result: MotionResult, *, flight_samples: int = 24,
                    si: bool = False) -> dict:
     """The whole motion as columns: ``t``, ``phase``, the free-body state
-    (:data:`~rollingdisk.phases.impact.FREE_STATE`: ``X_C, Y_C, Z_C, psi, theta, phi,
+    (:data:`~rollingdisk.phases.flight.FREE_STATE`: ``X_C, Y_C, Z_C, psi, theta, phi,
     V_X, V_Y, V_Z, omega1, omega2, omega3``) and the total energy ``E``.
 
     Parameters

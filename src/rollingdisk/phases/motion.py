@@ -6,8 +6,8 @@ Wires the pieces that each stop at a guard into one run (``docs/motion.md``):
   :func:`rollingdisk.ivp.hybrid.simulate_coulomb`, until lift-off, edge contact or
   falling flat;
 * free flight in closed form and the located touchdown
-  (:func:`~rollingdisk.phases.impact.free_flight`,
-  :func:`~rollingdisk.phases.impact.touchdown_time`);
+  (:func:`~rollingdisk.phases.flight.free_flight`,
+  :func:`~rollingdisk.phases.flight.touchdown_time`);
 * the Newton-Coulomb impact law at the touching rim point
   (:func:`~rollingdisk.phases.impact.impact`), also when an upright disk changes rim
   edge (``theta`` through 0, ``h > 0``);
@@ -36,16 +36,16 @@ from rollingdisk.model.disk import Disk
 from rollingdisk.model.ground import Coulomb
 from rollingdisk.model.outcomes import outcome
 from rollingdisk.phases.flat import flat_friction, flat_run
-from rollingdisk.phases.impact import (
+from rollingdisk.phases.flight import (
     _cross,
     _lowest_height,
     _r_xyz,
     _rot_x,
     _rot_z,
     free_flight,
-    impact,
     lowest_point,
 )
+from rollingdisk.phases.impact import impact
 from rollingdisk.phases.line_contact import (
     capture_slips,
     free_from_line,
@@ -131,7 +131,7 @@ class FlightSegment:
     disk : Disk
     t0, t1 : float
     state0, state1 : ndarray, shape (12,)
-        Free-body states (:data:`~rollingdisk.phases.impact.FREE_STATE`) at both ends.
+        Free-body states (:data:`~rollingdisk.phases.flight.FREE_STATE`) at both ends.
     """
 
     disk: Disk
@@ -364,7 +364,7 @@ def simulate_to_rest(disk: Disk, ground: Coulomb, t_span: Sequence[float], y0, *
         Time span [``sqrt(a/g)``], ``t1 > t0``.
     y0 : array_like, shape (10,) or (12,)
         A Coulomb state touching the plane (:data:`~rollingdisk.model.coulomb.COULOMB_STATE`)
-        or a free-body state above it (:data:`~rollingdisk.phases.impact.FREE_STATE`).
+        or a free-body state above it (:data:`~rollingdisk.phases.flight.FREE_STATE`).
     e : float
         Restitution of the impact law, ``[0, 1]`` (normal and tangential, Glocker).
     mu_impact : float, optional

@@ -1,4 +1,4 @@
-"""When a free flight comes down: :func:`~rollingdisk.phases.impact.touchdown_time`, and
+"""When a free flight comes down: :func:`~rollingdisk.phases.flight.touchdown_time`, and
 where its conservative advancement stalls, a scan that holds the run's wall-clock budget.
 
 The scan is a grid of the closed-form height of the lowest point (:func:`free_flight`),
@@ -15,7 +15,7 @@ import time
 
 import numpy as np
 
-from rollingdisk.phases.impact import _lowest_height, free_flight, touchdown_time
+from rollingdisk.phases.flight import _lowest_height, free_flight, touchdown_time
 
 __all__ = ["Spent", "touchdown", "SCAN_BLOCK"]
 

@@ -9,7 +9,7 @@ state; :func:`animate_motion` paints them with the drawing code of
 :mod:`rollingdisk.plotting.animation` (:func:`~rollingdisk.plotting.animation.draw_scene`).
 
 Heights: touching a rim edge ``Z_C = -z_P`` (eq. 7, the contact constraint); in flight
-``Z_C`` of the free-body state (:data:`~rollingdisk.phases.impact.FREE_STATE`); flat
+``Z_C`` of the free-body state (:data:`~rollingdisk.phases.flight.FREE_STATE`); flat
 ``Z_C = h``.  Units m = a = g = 1.
 """
 

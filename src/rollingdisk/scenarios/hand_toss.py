@@ -14,7 +14,7 @@ Free flight is torque-free: ``L`` is fixed in space.  With the inertia of eq. (1
     dn/dt = omega x n = (L/k1^2) x n:
 
 the normal precesses about ``L`` at the constant angle ``psi`` with the rate
-``Omega_p = |L|/k1^2`` (the rate :func:`rollingdisk.phases.impact.free_flight` turns the body
+``Omega_p = |L|/k1^2`` (the rate :func:`rollingdisk.phases.flight.free_flight` turns the body
 about ``L``).  Starting from ``n(0) = Z`` with ``L`` in the (X, Z) plane,
 
     n_Z(t) = cos^2 psi + sin^2 psi cos(Omega_p t),                                (H1)
@@ -194,7 +194,7 @@ def precession_rate(disk: Disk, flip_rate, psi):
 
 def launch_state(disk: Disk, height: float, upward_speed: float, flip_rate: float,
                  psi: float) -> np.ndarray:
-    """The free-body state of a hand launch (:data:`rollingdisk.phases.impact.FREE_STATE`).
+    """The free-body state of a hand launch (:data:`rollingdisk.phases.flight.FREE_STATE`).
 
     Heads up (``theta = pi/2``: ``xi = X``, ``eta = Z``), ``omega1 = Omega_p sin psi`` about
     ``xi`` and ``omega2 = (k1^2/k2^2) Omega_p cos psi`` about the axis: ``L = |L| (sin psi X +

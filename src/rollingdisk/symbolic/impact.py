@@ -1,9 +1,9 @@
 """Free flight, the lowest point, the Delassus matrix and the impact law, derived (sympy).
 
-Nothing is taken from :mod:`rollingdisk.phases.impact`; the numeric functions there are
-compared with these results by ``tests/test_impact.py``.  Frames and angles as in
-``docs/notation.md``: ``R = R_Z(psi) R_x(theta) R_eta(phi)``, C xi eta zeta = ``R_Z(psi)
-R_x(theta)``, eta the symmetry axis; ``m = a = g = 1``.
+Nothing is taken from :mod:`rollingdisk.phases.flight` or :mod:`rollingdisk.phases.impact`;
+the numeric functions there are compared with these results by ``tests/test_impact.py``.
+Frames and angles as in ``docs/notation.md``: ``R = R_Z(psi) R_x(theta) R_eta(phi)``,
+C xi eta zeta = ``R_Z(psi) R_x(theta)``, eta the symmetry axis; ``m = a = g = 1``.
 
 * :func:`inertia` - eq. (10) by integration over the cylinder.
 * :func:`free_flight` - the kinematics (eq. 2) from ``dR/dt R^T``; Euler's equations of the
