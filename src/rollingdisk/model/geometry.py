@@ -6,7 +6,7 @@ import numpy as np
 
 from rollingdisk.util.checks import real_array
 
-__all__ = ["h_tilde", "inertia"]
+__all__ = ["h_tilde", "inertia", "K2"]
 
 
 
@@ -37,6 +37,11 @@ def h_tilde(h, theta):
 
 
 
+#: ``k2^2 = 1/2``: the squared radius of gyration about the axis, units ``a^2`` (eq. 10),
+#: the same for every thickness.
+K2 = 0.5
+
+
 # ---------------------------------------------------------------------------------------
 # kernels: plain arithmetic, numba-compilable, element-wise on arrays
 # ---------------------------------------------------------------------------------------
@@ -53,7 +58,7 @@ def inertia(h):
     >>> inertia(0.0)
     (0.25, 0.5)
     """
-    return 0.25 + h * h / 3.0, 0.5
+    return 0.25 + h * h / 3.0, K2
 
 
 def contact_geometry(h, theta):

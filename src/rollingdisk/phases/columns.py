@@ -20,16 +20,11 @@ import csv
 import numpy as np
 
 from rollingdisk.model.coulomb import MODE_NAMES
-from rollingdisk.phases.flight import FREE_STATE
+from rollingdisk.phases.flight import FREE_STATE, _state_energy
 from rollingdisk.phases.line_contact import MODE_NAMES as LINE_MODES
 from rollingdisk.phases.line_contact import LineSegment
-from rollingdisk.phases.motion import (
-    FlatSegment,
-    FlightSegment,
-    MotionResult,
-    _free_from_contact,
-    _state_energy,
-)
+from rollingdisk.phases.motion import _free_from_contact
+from rollingdisk.phases.records import FlatSegment, FlightSegment, MotionResult
 from rollingdisk.util.checks import check_int
 from rollingdisk.util.errors import ParameterTypeError
 

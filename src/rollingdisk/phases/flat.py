@@ -40,11 +40,11 @@ import math
 import numpy as np
 from scipy.special import ellipe, ellipk, elliprd
 
+from rollingdisk.model.geometry import K2
 from rollingdisk.util.checks import check_real
 
 __all__ = ["flat_friction", "flat_run"]
 
-K2 = 0.5  # k2^2: moment of inertia about the axis (eq. 10, m = a = 1)
 
 
 def _cos2_delta(m: float) -> float:

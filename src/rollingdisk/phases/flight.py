@@ -195,8 +195,12 @@ def free_flight(disk: Disk, state, t):
 
 def free_energy(disk: Disk, state) -> float:
     """Total energy of a free body, units ``m g a``: ``|V|^2/2 + omega.J omega/2 + Z_C``."""
-    h = _check_disk(disk).h
-    s = _as_free_state(state)
+    return _state_energy(_check_disk(disk).h, _as_free_state(state))
+
+
+def _state_energy(h, s):
+    """:func:`free_energy` of the free-body state ``s`` (an array) of half-thickness ``h``,
+    unchecked."""
     k1, k2 = inertia(h)
     w1, w2, w3 = s[9:12]
     return float(0.5 * s[6:9] @ s[6:9] + 0.5 * (k1 * (w1 * w1 + w3 * w3) + k2 * w2 * w2)

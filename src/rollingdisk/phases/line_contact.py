@@ -36,6 +36,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rollingdisk.model.geometry import inertia
+
 __all__ = ["LINE_STATE", "SLIDE", "STICK_P", "STICK_M", "ROLL", "ROLL_STUCK", "MODE_NAMES",
            "line_params", "line_forces", "line_rhs", "line_energy", "line_from_free",
            "free_from_line", "capture_slips", "rests_on_rim", "LineSegment", "LineOutcome",
@@ -61,8 +63,8 @@ def line_params(h, mu_s, mu_k, c_roll=0.0, c_pivot=0.0, c_air=0.0, mode=SLIDE,
     """The float array ``params`` of :func:`line_rhs`: disk (``h``, eq. 10), friction,
     mode, the seeded slip directions used while a slip is below ``floor`` (it has just
     started from rest), the sign of ``omega2`` rolling resistance opposes below it."""
-    k1 = 0.25 + h * h / 3.0
-    return np.array([h, k1, 0.5, mu_s, mu_k, c_roll, c_pivot, c_air, float(mode),
+    k1, k2 = inertia(h)
+    return np.array([h, k1, k2, mu_s, mu_k, c_roll, c_pivot, c_air, float(mode),
                      d_p[0], d_p[1], d_m[0], d_m[1], roll_sign, floor])
 
 
@@ -162,7 +164,7 @@ def line_rhs(t, y, p):
 def line_energy(h, y):
     """Energy of a line state [``m g a``]: ``(v_x^2 + v_y^2)/2 + k2^2 omega2^2/2 + k1^2
     omega3^2/2 + 1`` (eq. 13 at ``theta = 0``, ``Z_C = 1``)."""
-    k1 = 0.25 + h * h / 3.0
+    k1, _ = inertia(h)
     y = np.asarray(y, float)
     return 0.5 * (y[4] ** 2 + y[5] ** 2) + 0.25 * y[6] ** 2 + 0.5 * k1 * y[7] ** 2 + 1.0
 
@@ -214,7 +216,7 @@ def capture_slips(h, s, mu, v_capture):
     v_x) k2^2/(1 + k2^2)``, ``P_+x - P_-x = -k1^2 omega3/h``, ``P_sy = -v_y/2``.
     """
     y = line_from_free(s)
-    k1, k2 = 0.25 + h * h / 3.0, 0.5
+    k1, k2 = inertia(h)
     u_p, u_m = _slips(h, y)
     cap = [mu > 0.0 and math.hypot(*u) <= v_capture for u in (u_p, u_m)]
     P = np.zeros((2, 2))  # rows: corner +, corner -
