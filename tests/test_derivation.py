@@ -10,6 +10,7 @@ import sympy as sp
 
 import rollingdisk as rd
 from conftest import random_states
+from rollingdisk.model.geometry import K2, inertia
 from rollingdisk.symbolic import check_equations, derive, format_table
 from rollingdisk.symbolic.derivation import ht, omega1, theta
 from rollingdisk.symbolic.paper import same
@@ -136,7 +137,7 @@ def test_inertia_and_contact_point_match_disk_model():
     for h in (0.0, 0.17, 1.3):
         disk = rd.Disk(h)
         assert float(d.inertia[0].subs(ht, h)) == pytest.approx(disk.k1_sq, rel=1e-15)
-        assert float(d.inertia[1]) == disk.k2_sq
+        assert float(d.inertia[1]) == disk.k2_sq == K2 == inertia(h)[1]
         for th in (-1.2, -0.3, 0.4, 1.1):
             yz = [float(e.subs({ht: disk.h_tilde(th), theta: th})) for e in d.contact_point]
             assert np.allclose(disk.contact_point_xyz(th), yz, rtol=1e-14, atol=1e-15)
