@@ -13,13 +13,14 @@ import http.server
 import json
 import os
 import shutil
-import tempfile
 import threading
 import time
 from pathlib import Path
 
 import numpy as np
 import pytest
+
+import browser
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -150,8 +151,6 @@ def test_notebook_executes_and_matches_the_library(tmp_path):
 
 
 # ----------------------------------------------------------------- the module in a browser
-CHROMIUM, CHROMEDRIVER = Path("/usr/bin/chromium"), Path("/usr/bin/chromedriver")
-
 PAGE = """<!doctype html><meta charset="utf-8"><div id="el"></div><script type="module">
 import view from "./widget.js";
 const data = JSON.parse(document.getElementById("data").textContent);
@@ -193,45 +192,28 @@ def served(tmp_path_factory):
 
 
 @pytest.mark.slow
-def test_module_draws_and_a_click_round_trips(served):
-    if not (CHROMIUM.exists() and CHROMEDRIVER.exists()):
-        pytest.skip("needs /usr/bin/chromium and /usr/bin/chromedriver")
-    webdriver = pytest.importorskip("selenium.webdriver")
-    from selenium.webdriver.chrome.service import Service
+def test_module_draws_and_a_click_round_trips(served, chromium):
     from selenium.webdriver.common.action_chains import ActionChains
 
-    options = webdriver.ChromeOptions()
-    options.binary_location = str(CHROMIUM)
-    profile = tempfile.TemporaryDirectory(prefix="rd-widget-chromium-")
-    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu",
-                 "--disable-background-networking", "--disable-component-update",
-                 "--no-first-run", "--window-size=900,700", f"--user-data-dir={profile.name}"):
-        options.add_argument(flag)
-    options.set_capability("goog:loggingPrefs", {"performance": "ALL"})
-    drv = webdriver.Chrome(service=Service(executable_path=str(CHROMEDRIVER)), options=options)
-    try:
-        drv.get(served + "/index.html")
-        end = time.monotonic() + 30
-        while not drv.execute_script("return window.rendered === true") and \
-                time.monotonic() < end:
-            time.sleep(0.2)
-        painted = """const c = document.querySelector(arguments[0]);
-            const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-            const seen = new Set();
-            for (let i = 0; i < d.length; i += 4 * 97) seen.add(d[i] + ',' + d[i+1] + ',' + d[i+2]);
-            return seen.size;"""
-        assert drv.execute_script(painted, "canvas.rd-map") >= 3  # stable, unstable, none
-        assert drv.execute_script(painted, "canvas.rd-3d") >= 3  # the disk on the plane
-        canvas = drv.find_element("css selector", "canvas.rd-map")
-        ActionChains(drv).move_to_element_with_offset(canvas, 30, -40).click().perform()
-        sel = drv.execute_script("return window.model.get('selected')")
-        assert isinstance(sel, list) and len(sel) == 2
-        assert 0.0 < sel[0] < 1.5708 and drv.execute_script("return window.saved") == 1
-        urls = [e["params"]["request"]["url"] for e in
-                (json.loads(x["message"])["message"] for x in drv.get_log("performance"))
-                if e.get("method") == "Network.requestWillBeSent"]
-        for url in urls:
-            assert url.startswith((served, "chrome:", "data:")), url
-    finally:
-        drv.quit()
-        profile.cleanup()
+    drv = chromium
+    browser.set_viewport(drv, 900, 700)
+    browser.requests(drv)  # from here on: the page's own
+    drv.get(served + "/index.html")
+    end = time.monotonic() + 30
+    while not drv.execute_script("return window.rendered === true") and \
+            time.monotonic() < end:
+        time.sleep(0.2)
+    painted = """const c = document.querySelector(arguments[0]);
+        const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+        const seen = new Set();
+        for (let i = 0; i < d.length; i += 4 * 97) seen.add(d[i] + ',' + d[i+1] + ',' + d[i+2]);
+        return seen.size;"""
+    assert drv.execute_script(painted, "canvas.rd-map") >= 3  # stable, unstable, none
+    assert drv.execute_script(painted, "canvas.rd-3d") >= 3  # the disk on the plane
+    canvas = drv.find_element("css selector", "canvas.rd-map")
+    ActionChains(drv).move_to_element_with_offset(canvas, 30, -40).click().perform()
+    sel = drv.execute_script("return window.model.get('selected')")
+    assert isinstance(sel, list) and len(sel) == 2
+    assert 0.0 < sel[0] < 1.5708 and drv.execute_script("return window.saved") == 1
+    urls = browser.assert_local(drv, served)
+    assert served + "/widget.js" in urls
