@@ -57,7 +57,7 @@ def test_a_click_is_answered_as_the_served_explorer_answers_it():
     exactly what /api/steady and /api/simulate send for that point."""
     import rollingdisk as rd
     from rollingdisk.explore import api
-    from rollingdisk.explore.widget import FRAMES, KICK, T_END, widget
+    from rollingdisk.explore.widget import FRAMES, KICK, T_END, traits, widget
 
     coin = rd.disk_from_options(disk="euro-1")
     w = widget(coin)
@@ -67,6 +67,8 @@ def test_a_click_is_answered_as_the_served_explorer_answers_it():
     assert w.motion == api.steady_payload(q, defaults)
     assert w.frames == api.simulate_payload({**q, "kick": [str(KICK)], "t_end": [str(T_END)],
                                              "points": [str(FRAMES)]}, defaults)
+    assert traits(coin, selected=(0.4, 1.5)) == {k: getattr(w, k) for k in (
+        "disk", "map", "selected", "motion", "frames")}  # the traits, without anywidget
     w.selected = [0.4, 0.0]  # a straight line off the static-equilibrium tilt: no steady
     with pytest.raises(rd.NoSteadyMotion) as exc:  # motion, the library's reason, no play
         rd.steady_motion(coin, "rough", 0.4, Omega0=0.0)  # omega30 = Omega0 cos(theta0)

@@ -26,7 +26,7 @@ import numpy as np
 
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
-__all__ = ["widget", "play", "ESM_PATH"]
+__all__ = ["widget", "play", "traits", "ESM_PATH"]
 
 #: The ES module the widget draws with, the served explorer's view module (shipped in the
 #: wheel with the package data).
@@ -132,6 +132,44 @@ def _steady_record(disk, ground: str, theta0: float, omega30: float) -> tuple[di
     return motion, frames
 
 
+def traits(disk="euro-1", ground: str = "rough", selected=None) -> dict:
+    """The traits :func:`widget` sends the browser, computed without a browser or anywidget
+    (a static picture of what the view draws; tests).
+
+    Parameters
+    ----------
+    disk : Disk, float or str
+        As in :func:`widget`.
+    ground : {"rough", "smooth"}
+    selected : (theta0, omega30), optional
+        A click on the map: the tilt [rad] and the spin about the axis [``sqrt(g/a)``].
+
+    Returns
+    -------
+    dict
+        ``disk`` (``h`` [``a``]; ``radius_m``, ``time_s`` = ``sqrt(a/g)`` [s] for a disk with
+        a physical size), ``map`` (:func:`.api.map_payload` in the (theta0, omega30) plane);
+        with ``selected``, ``motion`` (:func:`.api.steady_payload`) and ``frames``
+        (:func:`.api.simulate_payload`: the motion kicked by :data:`KICK` over
+        :data:`T_END`, ``{}`` where it is too fast to simulate or does not exist).
+
+    Raises
+    ------
+    ParameterError
+        ``ground`` unknown or the disk beyond the explorer's ``h`` in [0, 100].
+    ParameterTypeError
+        ``disk`` of another type.
+    """
+    if ground not in ("rough", "smooth"):
+        raise ParameterError(f"ground must be 'rough' or 'smooth', got {ground!r}")
+    d = _disk(disk)
+    out = {"disk": _disk_record(d), "map": _map_record(d, ground)}
+    if selected is not None:
+        out["selected"] = [float(selected[0]), float(selected[1])]
+        out["motion"], out["frames"] = _steady_record(d, ground, *out["selected"])
+    return out
+
+
 def widget(disk="euro-1", ground: str = "rough"):
     """A notebook view of ``disk``: its map of steady circles; a click shows the steady
     motion with units and its kicked 3D motion.
@@ -151,8 +189,7 @@ def widget(disk="euro-1", ground: str = "rough"):
         selection; ``motion["si"]`` holds SI values for a disk with a physical size).
     """
     anywidget, traitlets = _anywidget()
-    if ground not in ("rough", "smooth"):
-        raise ParameterError(f"ground must be 'rough' or 'smooth', got {ground!r}")
+    first = traits(disk, ground)
     d = _disk(disk)
 
     class DiskExplorer(_view_class()):
@@ -163,7 +200,7 @@ def widget(disk="euro-1", ground: str = "rough"):
                 return
             self.motion, self.frames = _steady_record(d, ground, float(sel[0]), float(sel[1]))
 
-    return DiskExplorer(disk=_disk_record(d), map=_map_record(d, ground))
+    return DiskExplorer(**first)
 
 
 def play(result, n_frames: int = 120):
