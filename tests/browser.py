@@ -2,8 +2,8 @@
 (/usr/bin/chromium, /usr/bin/chromedriver; selenium-manager is never asked for them and
 nothing is downloaded), a throw-away profile, and the DevTools log of every request the
 browser makes, from which :func:`assert_local` checks that a page asked nothing of the
-network.  A test that needs a browser is skipped where either binary or selenium (the
-``browser`` extra) is missing.
+network, and :func:`console_errors` that its scripts raised nothing.  A test that needs a
+browser is skipped where either binary or selenium (the ``browser`` extra) is missing.
 
 The module-wide fixture ``chromium`` (tests/conftest.py) hands out one browser per test
 module; :func:`chromium` opens another where a test needs its own.
@@ -45,7 +45,7 @@ def chromium(width: int = 1280, height: int = 900):
     with tempfile.TemporaryDirectory(prefix="rd-chromium-") as profile:
         for flag in (*FLAGS, f"--window-size={width},{height}", f"--user-data-dir={profile}"):
             options.add_argument(flag)
-        options.set_capability("goog:loggingPrefs", {"performance": "ALL"})
+        options.set_capability("goog:loggingPrefs", {"performance": "ALL", "browser": "ALL"})
         driver = webdriver.Chrome(service=Service(executable_path=str(CHROMEDRIVER)),
                                   options=options)
         try:
@@ -79,3 +79,10 @@ def assert_local(driver, *allowed: str) -> list[str]:
     for url in urls:
         assert url.startswith(allowed), f"{url} is outside {allowed}"
     return urls
+
+
+def console_errors(driver) -> list[str]:
+    """The errors the page's scripts raised or logged since the last call (a module that
+    failed to load, an exception), a missing ``favicon.ico`` aside."""
+    return [e["message"] for e in driver.get_log("browser")
+            if e["level"] == "SEVERE" and "favicon.ico" not in e["message"]]

@@ -117,6 +117,7 @@ def test_click_shows_the_library_numbers_and_draws_3d(page):
     base = page.current_url.split("?")[0]
     urls = browser.assert_local(page, base)
     assert base + "view.js" in urls and base + "explore.js" in urls, urls
+    assert browser.console_errors(page) == []
 
     shot = os.environ.get("ROLLINGDISK_SCREENSHOT")
     if shot:

@@ -219,3 +219,4 @@ def test_module_draws_and_a_click_round_trips(served, chromium):
     assert 0.0 < sel[0] < 1.5708 and drv.execute_script("return window.saved") == 1
     urls = browser.assert_local(drv, served)
     assert served + "/widget.js" in urls
+    assert browser.console_errors(drv) == []

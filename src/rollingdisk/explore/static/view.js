@@ -355,18 +355,24 @@ function render({ model, el }) {
                              font: "13px/1.4 system-ui, sans-serif" });
   const fit = { maxWidth: "100%", height: "auto", display: "block", background: "#fff",
                 border: "1px solid #ccc" };
+  const column = { flex: "0 1 442px", minWidth: "0" };   // a canvas wide, shrinking to fit
   const mapped = present(model.get("map"));
   const cleanups = [];
   const listen = (event, f) => { model.on(event, f); cleanups.push(() => model.off(event, f)); };
 
   if (mapped) {
     const left = element(row, "div", { className: "rd-left" });
+    Object.assign(left.style, column);
     const canvas = element(left, "canvas", { width: 440, height: 380, className: "rd-map" });
     Object.assign(canvas.style, fit, { cursor: "crosshair" });
+    const legend = element(left, "div", { className: "rd-legend", textContent:
+      "dark: no steady motion \u00b7 orange: unstable \u00b7 light: stable \u00b7 " +
+      "dashed: tan \u03b8\u2080 = h" });
+    Object.assign(legend.style, { fontSize: "12px", color: "#666", marginTop: "4px" });
     const grid = element(left, "div", { className: "rd-numbers" });
     Object.assign(grid.style, { display: "grid", gridTemplateColumns: "auto auto auto auto",
-                                gap: "1px 14px", justifyContent: "start", marginTop: "6px",
-                                fontVariantNumeric: "tabular-nums" });
+                                gap: "1px 12px", justifyContent: "start", marginTop: "6px",
+                                fontSize: "12px", fontVariantNumeric: "tabular-nums" });
     const drawSelected = () => {
       const sel = model.get("selected");
       drawMap(canvas, model.get("map"), Infinity, sel && sel.length === 2 ? sel : null);
@@ -394,6 +400,7 @@ function render({ model, el }) {
   }
 
   const right = element(row, "div", { className: "rd-right" });
+  Object.assign(right.style, column);
   const view = element(right, "canvas", { width: 440, height: 380, className: "rd-3d" });
   Object.assign(view.style, fit, { cursor: "grab" });
   const bar = element(right, "div");
@@ -401,6 +408,7 @@ function render({ model, el }) {
                              marginTop: "6px", flexWrap: "wrap" });
   const button = element(bar, "button", { type: "button", textContent: PLAY });
   const slider = element(bar, "input", { type: "range", min: 0, max: 0, value: 0 });
+  Object.assign(slider.style, { flex: "1 1 120px", minWidth: "0" });
   const label = element(bar, "span");
   const followBox = element(element(bar, "label", { textContent: " follow" }), "input",
                             { type: "checkbox", checked: true });
