@@ -101,6 +101,30 @@ def test_play_draws_a_disk_standing_on_the_plane_at_P():
         assert f["X_P"][k] == pytest.approx(P[0], abs=1e-3)
 
 
+def test_play_draws_a_toss_never_below_the_plane():
+    """A motion to rest (a toss of a coin: flight, impacts, rolling) played: the first
+    frame is the toss's initial state, and at every frame the drawn coin's lowest point is
+    on or above the plane Z = 0, at the contact point P sent for it (its lowest point, the
+    rim point nearest the plane)."""
+    import rollingdisk as rd
+    from rollingdisk.explore.widget import play
+
+    coin = rd.disk_from_options(disk="euro-1")
+    motion = rd.toss(coin, 3.0, 2.0, 5.0, 0.3).motion
+    f = play(motion, n_frames=60).frames
+    assert len(f["t"]) == 60 and f["Z_C"][0] == pytest.approx(3.0)  # tossed from Z_C = 3
+    a = np.linspace(0.0, 2.0 * np.pi, 3601)
+    for k in range(60):
+        C = np.array([f["X_C"][k], f["Y_C"][k], f["Z_C"][k]])
+        eta, e1, e2 = (np.array(f[n][3 * k:3 * k + 3]) for n in ("axis", "e1", "e2"))
+        pts = np.concatenate([C + s * coin.h * eta + np.outer(np.cos(a), e1)
+                              + np.outer(np.sin(a), e2) for s in (-1, 1)])
+        low = pts[np.argmin(pts[:, 2])]
+        assert low[2] > -1e-5, k
+        if abs(eta[2]) < 0.999:  # not lying flat (then every point of a face is lowest)
+            assert np.hypot(low[0] - f["X_P"][k], low[1] - f["Y_P"][k]) < 5e-3, k
+
+
 def test_bad_input_is_named():
     from rollingdisk.explore.widget import play, widget
     from rollingdisk.util.errors import ParameterError, ParameterTypeError
