@@ -1,4 +1,5 @@
-"""The order of the gallery: from one disk's numbers to whole maps and Euler's disk."""
+"""The order of the gallery: from one disk's numbers (and the notebook view that shows them)
+to whole maps and Euler's disk."""
 
 from __future__ import annotations
 
@@ -7,6 +8,7 @@ import os
 ORDER = (
     "plot_coin_thresholds.py",
     "plot_steady_circle.py",
+    "plot_notebook_widget.py",
     "plot_friction_sliding.py",
     "plot_exact_orbit.py",
     "plot_sweep_basin.py",

@@ -39,6 +39,17 @@ def derived():
     return lambdified()
 
 
+@pytest.fixture(scope="module")
+def chromium():
+    """One headless Chromium for a test module's browser tests, its requests logged
+    (tests/browser.py: ``set_viewport``, ``assert_local``); skipped where the system's
+    Chromium, its driver or selenium is missing."""
+    import browser
+
+    with browser.chromium() as driver:
+        yield driver
+
+
 # -- the suite leaves the checkout as it found it ------------------------------------------
 #: Caches that tools keep beside the sources (ignored by git, never outputs of a test).
 _CACHES = ("__pycache__/", ".pytest_cache/", ".hypothesis/", ".ruff_cache/", ".venv/",

@@ -6,10 +6,8 @@ that exist on the page; at a phone's width (420 px) nothing overflows horizontal
 body text computes to at least 14 px; every image decoded (``naturalWidth > 0``); the
 viewport meta tag is there; at a laptop's 1280 x 800 the coin atlas's first screen, without
 scrolling, names the coin and shows 0.197 m/s, and every request the browser makes (its
-DevTools log) is for a file of the atlas.  Nothing is downloaded: the driver and the
-browser are the system's (/usr/bin/chromedriver, /usr/bin/chromium); selenium-manager is
-never asked for them.  Skipped where either is missing or selenium is not installed (the
-``browser`` extra).
+DevTools log) is for a file of the atlas.  The browser is the shared headless Chromium
+(tests/browser.py), skipped where it or selenium (the ``browser`` extra) is missing.
 
 Set ``ROLLINGDISK_ATLAS_SCREENSHOTS=DIR`` to keep screenshots at 1200 px and 420 px, and the
 coin atlas's first screen (``atlas_coin_1280x800.png`` and its text).
@@ -17,23 +15,13 @@ coin atlas's first screen (``atlas_coin_1280x800.png`` and its text).
 
 from __future__ import annotations
 
-import json
 import os
-import tempfile
 from pathlib import Path
 
 import pytest
 
-CHROMIUM = Path("/usr/bin/chromium")
-CHROMEDRIVER = Path("/usr/bin/chromedriver")
-
-if not (CHROMIUM.exists() and CHROMEDRIVER.exists()):
-    pytest.skip("needs /usr/bin/chromium and /usr/bin/chromedriver", allow_module_level=True)
-webdriver = pytest.importorskip("selenium.webdriver")
-
-from selenium.webdriver.chrome.service import Service  # noqa: E402
-
-from rollingdisk.atlas.build import build_atlas  # noqa: E402
+import browser
+from rollingdisk.atlas.build import build_atlas
 
 # building the atlas (about 20 s on 2 cores) and starting Chromium take well over 10 s
 pytestmark = pytest.mark.slow
@@ -64,33 +52,14 @@ def test_a_coin_atlas_answers_in_si(atlas):
 
 
 @pytest.fixture(scope="module")
-def driver():
-    options = webdriver.ChromeOptions()
-    options.binary_location = str(CHROMIUM)
-    profile = tempfile.TemporaryDirectory(prefix="rd-chromium-")
-    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu",
-                 "--disable-background-networking", "--disable-component-update",
-                 "--disable-sync", "--no-first-run", f"--window-size={DESKTOP},900",
-                 f"--user-data-dir={profile.name}"):
-        options.add_argument(flag)
-    # the DevTools log of every request, read by test_first_screen_of_the_coin_atlas
-    options.set_capability("goog:loggingPrefs", {"performance": "ALL"})
-    drv = webdriver.Chrome(service=Service(executable_path=str(CHROMEDRIVER)),
-                           options=options)
-    try:
-        yield drv
-    finally:
-        drv.quit()
-        profile.cleanup()
+def driver(chromium):
+    browser.set_viewport(chromium, DESKTOP, 900)
+    return chromium
 
 
 def _open(driver, atlas, width: int):
     """Load the page with a viewport ``width`` CSS pixels wide; wait for every image."""
-    driver.set_window_size(width, 900)
-    # the window's outer size includes no chrome in headless mode, but check and correct
-    inner = driver.execute_script("return window.innerWidth")
-    if inner != width:
-        driver.set_window_size(2 * width - inner, 900)
+    browser.set_viewport(driver, width, 900)
     driver.get(atlas.index.as_uri())
     driver.set_script_timeout(30)
     driver.execute_async_script(
@@ -186,11 +155,8 @@ def test_first_screen_of_the_coin_atlas(driver, atlas):
     if atlas.disk is None or atlas.disk.radius is None:
         pytest.skip("the answers lead the atlas of a disk with a size")
     width, height = LAPTOP
-    driver.set_window_size(width, height)
-    inner = driver.execute_script("return [window.innerWidth, window.innerHeight]")
-    if inner != [width, height]:
-        driver.set_window_size(2 * width - inner[0], 2 * height - inner[1])
-    driver.get_log("performance")  # drop what earlier pages asked for
+    browser.set_viewport(driver, width, height)
+    browser.requests(driver)  # drop what earlier pages asked for
     driver.get(atlas.index.as_uri())
     driver.set_script_timeout(30)
     driver.execute_async_script(
@@ -208,9 +174,5 @@ def test_first_screen_of_the_coin_atlas(driver, atlas):
     assert "euro" in first and "1-euro coin" in driver.title
     assert "0.197 m/s" in first
     # every request the browser made is for a file beside the page: none leaves the machine
-    urls = [e["params"]["request"]["url"] for e in
-            (json.loads(entry["message"])["message"] for entry in driver.get_log("performance"))
-            if e.get("method") == "Network.requestWillBeSent"]
+    urls = browser.assert_local(driver, atlas.out_dir.as_uri() + "/")
     assert atlas.index.as_uri() in urls and any(u.endswith(".png") for u in urls), urls
-    for url in urls:
-        assert url.startswith(atlas.out_dir.as_uri() + "/"), url

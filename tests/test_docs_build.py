@@ -8,17 +8,16 @@ of the gallery has a page with its figure.
 """
 
 import importlib
-import json
 import os
 import shutil
 import subprocess
 import sys
-import tempfile
 import time
 from pathlib import Path
 
 import pytest
 
+import browser
 import rollingdisk
 
 for _mod in ("sphinx", "numpydoc", "myst_parser", "sphinx_gallery"):
@@ -88,36 +87,8 @@ def test_every_example_has_a_gallery_page_with_a_figure(built):
 
 
 # ---------------------------------------------------------------------------------------
-# the built site in a real browser (Debian's Chromium, driven by selenium; never downloaded)
+# the built site in a real browser: the shared headless Chromium (tests/browser.py)
 # ---------------------------------------------------------------------------------------
-CHROMIUM, CHROMEDRIVER = Path("/usr/bin/chromium"), Path("/usr/bin/chromedriver")
-
-
-@pytest.fixture(scope="module")
-def browser():
-    if not (CHROMIUM.exists() and CHROMEDRIVER.exists()):
-        pytest.skip("needs /usr/bin/chromium and /usr/bin/chromedriver")
-    webdriver = pytest.importorskip("selenium.webdriver")
-    from selenium.webdriver.chrome.service import Service
-
-    options = webdriver.ChromeOptions()
-    options.binary_location = str(CHROMIUM)
-    profile = tempfile.TemporaryDirectory(prefix="rd-docs-chromium-")
-    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu",
-                 "--disable-background-networking", "--disable-component-update",
-                 "--disable-sync", "--no-first-run", "--window-size=1280,900",
-                 f"--user-data-dir={profile.name}"):
-        options.add_argument(flag)
-    options.set_capability("goog:loggingPrefs", {"performance": "ALL"})
-    drv = webdriver.Chrome(service=Service(executable_path=str(CHROMEDRIVER)),
-                           options=options)
-    try:
-        yield drv
-    finally:
-        drv.quit()
-        profile.cleanup()
-
-
 def _wait(driver, script: str, timeout: float = 30.0):
     """Poll ``script`` (a JavaScript expression) until it is truthy; its value."""
     end = time.monotonic() + timeout
@@ -128,53 +99,41 @@ def _wait(driver, script: str, timeout: float = 30.0):
         time.sleep(0.2)
 
 
-def _requests(driver) -> list[str]:
-    """The URLs the browser asked for since the last call, the browser's own pages
-    (``chrome:``) and inline ``data:`` URIs aside."""
-    urls = [e["params"]["request"]["url"] for e in
-            (json.loads(entry["message"])["message"] for entry in driver.get_log("performance"))
-            if e.get("method") == "Network.requestWillBeSent"]
-    return [u for u in urls if not u.startswith(("chrome:", "data:", "about:", "blob:"))]
-
-
-def test_math_renders_offline(built, browser):
+def test_math_renders_offline(built, chromium):
     """The derived equations are typeset by the MathJax shipped with the site: MathJax's
     output elements appear, no TeX source is left showing, and every request the page
     makes is for a file of the site."""
     _, html = built
-    browser.get_log("performance")
-    browser.get((html / "equations.html").as_uri())
-    n = _wait(browser, "document.querySelectorAll('mjx-container').length")
+    browser.requests(chromium)
+    chromium.get((html / "equations.html").as_uri())
+    n = _wait(chromium, "document.querySelectorAll('mjx-container').length")
     assert n and n >= 40, n
-    text = browser.execute_script("return document.body.innerText")
+    text = chromium.execute_script("return document.body.innerText")
     assert "\\frac" not in text and "\\sqrt" not in text
-    urls = _requests(browser)
+    urls = browser.assert_local(chromium, html.as_uri() + "/")
     assert any("mathjax" in u for u in urls), urls
-    for url in urls:
-        assert url.startswith(html.as_uri() + "/"), url
 
 
-def test_search_finds_euler(built, browser):
+def test_search_finds_euler(built, chromium):
     _, html = built
-    browser.get((html / "search.html").as_uri() + "?q=Euler")
-    hits = _wait(browser, "document.querySelectorAll('#search-results li').length")
+    chromium.get((html / "search.html").as_uri() + "?q=Euler")
+    hits = _wait(chromium, "document.querySelectorAll('#search-results li').length")
     assert hits and hits >= 3, hits
-    titles = browser.execute_script(
+    titles = chromium.execute_script(
         "return [...document.querySelectorAll('#search-results li a')].map(a => a.textContent)")
     assert any("Euler" in t for t in titles), titles
 
 
-def test_cli_reference_lists_every_command(built, browser):
+def test_cli_reference_lists_every_command(built, chromium):
     from rollingdisk.cli.app import COMMANDS
 
     _, html = built
-    browser.get_log("performance")
-    browser.get((html / "cli.html").as_uri())
-    heads = browser.execute_script(
+    browser.requests(chromium)
+    chromium.get((html / "cli.html").as_uri())
+    heads = chromium.execute_script(
         "return [...document.querySelectorAll('h2')].map(h => h.textContent)")
     for name, _module, _text in COMMANDS:
         assert any(f"rollingdisk {name}" in h for h in heads), (name, heads)
-    body = browser.execute_script("return document.body.innerText")
+    body = chromium.execute_script("return document.body.innerText")
     assert "--t-end" in body and "--disk" in body
-    for url in _requests(browser):
-        assert url.startswith(html.as_uri() + "/"), url
+    browser.assert_local(chromium, html.as_uri() + "/")

@@ -290,7 +290,7 @@ def test_concurrent_requests(base_url):
 # ------------------------------------------------------------------------- the page
 def test_static_files_are_local(base_url):
     for path, kind in (("/", "text/html"), ("/explore.js", "javascript"),
-                       ("/explore.css", "text/css")):
+                       ("/view.js", "javascript"), ("/explore.css", "text/css")):
         with urllib.request.urlopen(base_url + path, timeout=10) as res:
             assert res.status == 200 and kind in res.headers["Content-Type"]
             text = res.read().decode()
@@ -369,9 +369,40 @@ def test_static_files_are_package_data():
     globs = conf["tool"]["setuptools"]["package-data"]["rollingdisk.explore"]
     static = SRC / "rollingdisk" / "explore" / "static"
     files = sorted(p.name for p in static.iterdir())
-    assert files == ["explore.css", "explore.js", "index.html", "widget.js"]
+    assert files == ["explore.css", "explore.js", "index.html", "view.js"]
     for name in files:  # each shipped in the wheel
         assert any(fnmatch.fnmatch(f"static/{name}", g) for g in globs), name
+
+
+def _defined(js: str) -> set[str]:
+    """Names a script defines at its top level: functions and constants."""
+    import re
+
+    return set(re.findall(r"^(?:export )?(?:async )?function (\w+)", js, re.M)) | set(
+        re.findall(r"^(?:export )?(?:const|let) (\w+)", js, re.M))
+
+
+def test_one_view_module_draws_for_the_page_and_the_widget():
+    """The map, the numbers and the 3D view are drawn by one ES module, ``view.js``: the
+    page's script loads it (as a module, served from the package) and draws nothing itself,
+    the notebook widget's ESM is that very file, and no name is defined in both scripts."""
+    from rollingdisk.explore.widget import ESM_PATH
+
+    static = SRC / "rollingdisk" / "explore" / "static"
+    page = (static / "index.html").read_text()
+    script = (static / "explore.js").read_text()
+    view = (static / "view.js").read_text()
+    assert '<script type="module" src="explore.js"></script>' in page
+    assert 'import * as view from "./view.js";' in script
+    assert server.STATIC["/view.js"] == "view.js"
+    assert ESM_PATH == static / "view.js"
+    # the page's script asks and wires; every canvas call is the view module's
+    for drawing in ("getContext", "fillRect", "fillText", "putImageData", "lineTo", "project("):
+        assert drawing not in script and drawing in view, drawing
+    for name in ("drawMap", "mapPoint", "showNumbers", "drawScene", "orbit", "playback",
+                 "render"):
+        assert name in _defined(view), name
+    assert _defined(script) & _defined(view) == set()
 
 
 def test_a_physical_disk_gets_si_values_beside_the_papers():

@@ -3,9 +3,9 @@
 The page must show, for the point clicked on the map, exactly the library's numbers
 (rd.steady_motion, rd.stability; the page keeps them at full precision in data-value
 attributes), draw the 3D view, and give the library's reason where no steady motion
-exists.  Nothing is downloaded: the driver and the browser are the system's
-(/usr/bin/chromedriver, /usr/bin/chromium); selenium-manager is never asked for them.
-Skipped where either is missing or selenium is not installed (the ``browser`` extra).
+exists; every file it loads comes from the explorer's server (the page's script and the view
+module it loads), none from the network.  The browser is the shared headless Chromium
+(tests/browser.py), skipped where it or selenium (the ``browser`` extra) is missing.
 
 Set ``ROLLINGDISK_SCREENSHOT=docs/gallery/explorer.png`` to keep a screenshot of the page.
 """
@@ -14,54 +14,37 @@ from __future__ import annotations
 
 import math
 import os
-import tempfile
 import time
-from pathlib import Path
 
 import pytest
 
+import browser
 import rollingdisk as rd
 
-CHROMIUM = Path("/usr/bin/chromium")
-CHROMEDRIVER = Path("/usr/bin/chromedriver")
+pytest.importorskip("selenium.webdriver")
 
-if not (CHROMIUM.exists() and CHROMEDRIVER.exists()):
-    pytest.skip("needs /usr/bin/chromium and /usr/bin/chromedriver", allow_module_level=True)
-webdriver = pytest.importorskip("selenium.webdriver")
-
-from selenium.webdriver.chrome.service import Service  # noqa: E402
 from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
 from selenium.webdriver.common.by import By  # noqa: E402
 from selenium.webdriver.support.ui import Select  # noqa: E402
 
 from rollingdisk.explore import make_server  # noqa: E402
 
-#: The map's plot box in canvas pixels (MARGIN and the canvas size in explore.js / index.html).
+#: The map's plot box in canvas pixels (MARGIN in view.js, the canvas size in index.html).
 BOX = {"x0": 58, "y0": 14, "w": 560 - 58 - 12, "h": 460 - 14 - 44}
 
 
 @pytest.fixture(scope="module")
-def page():
+def page(chromium):
     srv = make_server(0.17, "rough", "127.0.0.1", 0)
     srv.start_in_thread()
-    options = webdriver.ChromeOptions()
-    options.binary_location = str(CHROMIUM)
-    profile = tempfile.TemporaryDirectory(prefix="rd-chromium-")
-    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu",
-                 "--disable-background-networking", "--disable-component-update",
-                 "--disable-sync", "--no-first-run", "--window-size=1300,980",
-                 f"--user-data-dir={profile.name}"):
-        options.add_argument(flag)
-    driver = webdriver.Chrome(service=Service(executable_path=str(CHROMEDRIVER)),
-                              options=options)
+    browser.set_viewport(chromium, 1300, 980)
     try:
-        driver.get(srv.url)
-        yield driver
+        browser.requests(chromium)  # from here on: the page's own
+        chromium.get(srv.url)
+        yield chromium
     finally:
-        driver.quit()
         srv.shutdown()
         srv.server_close()
-        profile.cleanup()
 
 
 def wait_for(driver, script, timeout=20.0):
@@ -130,6 +113,12 @@ def test_click_shows_the_library_numbers_and_draws_3d(page):
                         "s.dispatchEvent(new Event('input'));")
     assert page.find_element(By.ID, "rolls").text == "rolls"
 
+    # every file came from the explorer's server, the view module among them
+    base = page.current_url.split("?")[0]
+    urls = browser.assert_local(page, base)
+    assert base + "view.js" in urls and base + "explore.js" in urls, urls
+    assert browser.console_errors(page) == []
+
     shot = os.environ.get("ROLLINGDISK_SCREENSHOT")
     if shot:
         page.save_screenshot(shot)
@@ -187,46 +176,34 @@ def test_a_coin_shows_si_values_and_fits_a_phone():
     """``explore --disk euro-1``: a click on the map at 420 CSS pixels shows the steady
     motion's SI values beside the paper's (the coin's scales times the library's numbers),
     and the page still has no sideways scroll."""
-    import rollingdisk as rd
-
     coin = rd.disk_from_options(disk="euro-1")
     srv = make_server(coin.h, "rough", "127.0.0.1", 0, disk=coin)
     srv.start_in_thread()
-    options = webdriver.ChromeOptions()
-    options.binary_location = str(CHROMIUM)
-    profile = tempfile.TemporaryDirectory(prefix="rd-chromium-")
-    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu",
-                 "--disable-background-networking", "--disable-component-update",
-                 "--disable-sync", "--no-first-run", "--window-size=420,900",
-                 f"--user-data-dir={profile.name}"):
-        options.add_argument(flag)
-    driver = webdriver.Chrome(service=Service(executable_path=str(CHROMEDRIVER)),
-                              options=options)
     try:
-        inner = driver.execute_script("return window.innerWidth")
-        if inner != 420:
-            driver.set_window_size(2 * 420 - inner, 900)
-        driver.get(srv.url)
-        wait_for(driver, "return document.getElementById('map').dataset.ready === '1'")
-        canvas = driver.find_element(By.ID, "map")
-        scale = canvas.size["width"] / 560
-        px = (BOX["x0"] + 0.7 / (0.5 * math.pi) * BOX["w"]) * scale
-        py = (BOX["y0"] + (1 - 1.4 / 3.0) * BOX["h"]) * scale
-        ActionChains(driver).move_to_element_with_offset(
-            canvas, int(round(px - canvas.size["width"] / 2)),
-            int(round(py - canvas.size["height"] / 2))).click().perform()
-        wait_for(driver, "return document.getElementById('steady').dataset.exists === 'true'")
-        got = shown(driver)
-        m = rd.steady_motion(coin, "rough", float(got["theta0"]),
-                             omega30=float(got["omega30"]))
-        ts = float(coin.time_to_si(1.0))
-        assert float(got["si:Omega0 [rad/s]"]) == pytest.approx(m.Omega0 / ts, rel=1e-9)
-        assert float(got["si:r_C [mm]"]) == pytest.approx(1e3 * m.r_C * 0.011625, rel=1e-9)
-        wide = driver.execute_script(
-            "return [document.documentElement.scrollWidth, window.innerWidth]")
-        assert wide[0] <= wide[1], wide
+        with browser.chromium(420, 900) as driver:
+            browser.set_viewport(driver, 420, 900)
+            driver.get(srv.url)
+            wait_for(driver, "return document.getElementById('map').dataset.ready === '1'")
+            canvas = driver.find_element(By.ID, "map")
+            scale = canvas.size["width"] / 560
+            px = (BOX["x0"] + 0.7 / (0.5 * math.pi) * BOX["w"]) * scale
+            py = (BOX["y0"] + (1 - 1.4 / 3.0) * BOX["h"]) * scale
+            ActionChains(driver).move_to_element_with_offset(
+                canvas, int(round(px - canvas.size["width"] / 2)),
+                int(round(py - canvas.size["height"] / 2))).click().perform()
+            wait_for(driver,
+                     "return document.getElementById('steady').dataset.exists === 'true'")
+            got = shown(driver)
+            m = rd.steady_motion(coin, "rough", float(got["theta0"]),
+                                 omega30=float(got["omega30"]))
+            ts = float(coin.time_to_si(1.0))
+            assert float(got["si:Omega0 [rad/s]"]) == pytest.approx(m.Omega0 / ts, rel=1e-9)
+            assert float(got["si:r_C [mm]"]) == pytest.approx(1e3 * m.r_C * 0.011625,
+                                                              rel=1e-9)
+            wide = driver.execute_script(
+                "return [document.documentElement.scrollWidth, window.innerWidth]")
+            assert wide[0] <= wide[1], wide
+            browser.assert_local(driver, srv.url.split("?")[0])
     finally:
-        driver.quit()
         srv.shutdown()
         srv.server_close()
-        profile.cleanup()

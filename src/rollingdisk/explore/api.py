@@ -24,7 +24,7 @@ import rollingdisk as rd
 
 __all__ = ["ApiError", "GROUNDS", "PLANES", "N_MAX", "T_END_MAX", "POINTS_MAX",
            "SIM_MAX_STEPS", "H_RANGE", "map_payload", "steady_payload", "simulate_payload",
-           "si_record"]
+           "si_record", "pose_track", "POSE_RIM"]
 
 GROUNDS = ("rough", "smooth")
 #: Map planes: the tilt ``theta0`` against ``omega30``, ``Omega0`` or ``r_C`` (Figure 4).
@@ -344,20 +344,49 @@ def simulate_payload(query: dict, defaults: dict | None = None) -> dict:
                                 max_steps=SIM_MAX_STEPS)
     except rd.ParameterError as exc:  # NoSteadyMotion included: nothing to simulate
         raise ApiError(str(exc)) from None
-    cols = {"t": tr.t, "theta": tr.theta, "psi": tr.psi, "phi": tr.phi, "X_C": tr.X_C,
-            "Y_C": tr.Y_C, "X_P": tr.X_P, "Y_P": tr.Y_P}
+    poses = [disk_pose(h, float(X), float(Y), float(psi), float(th), float(phi), n=POSE_RIM)
+             for X, Y, psi, th, phi in zip(tr.X_C, tr.Y_C, tr.psi, tr.theta, tr.phi)]
+    return {
+        "motion": _motion_record(m, s), "kick": kick, "t_end": t_end, "h": h,
+        "status": tr.status, "message": tr.message, "t_last": float(tr.t[-1]),
+        "n_steps": int(tr.n_steps), "max_steps": SIM_MAX_STEPS,
+        **pose_track(h, poses, t=tr.t, theta=tr.theta, psi=tr.psi, phi=tr.phi, X_C=tr.X_C,
+                     Y_C=tr.Y_C, X_P=tr.X_P, Y_P=tr.Y_P),
+    }
+
+
+#: Points on each rim circle of a pose given to :func:`pose_track`: 4, so that the rim's
+#: points 0 and 1 lie at the body-fixed radii e1 and e2.
+POSE_RIM = 4
+
+
+def pose_track(h: float, poses, **columns) -> dict:
+    """The track the view draws (``static/view.js``: ``drawScene``), as rounded flat lists.
+
+    Parameters
+    ----------
+    h : float
+        Half-thickness [``a``].
+    poses : sequence of DiskPose
+        The drawn disk at each stored point
+        (:func:`rollingdisk.plotting.animation.disk_pose` with ``n=POSE_RIM``).
+    **columns : array_like
+        Per stored point: ``t`` [``sqrt(a/g)``], ``X_C, Y_C, X_P, Y_P`` [``a``] (needed),
+        and any others (``theta, psi, phi`` [rad]), kept in this order.
+
+    Returns
+    -------
+    dict
+        The columns, then ``Z_C`` (height of C) and the unit vectors ``axis`` (eta), ``e1``,
+        ``e2`` (body-fixed radii) of each pose, flattened (``3 k`` to ``3 k + 2``).
+    """
     Z_C, axis, e1, e2 = [], [], [], []
-    for X, Y, psi, th, phi in zip(tr.X_C, tr.Y_C, tr.psi, tr.theta, tr.phi):
-        pose = disk_pose(h, float(X), float(Y), float(psi), float(th), float(phi), n=4)
+    for pose in poses:
         top = pose.center + h * pose.axis  # rim circle 1 is about C + h eta
         Z_C.append(float(pose.center[2]))
         axis.extend(pose.axis.tolist())
         e1.extend((pose.rims[1][:, 0] - top).tolist())
         e2.extend((pose.rims[1][:, 1] - top).tolist())
-    return {
-        "motion": _motion_record(m, s), "kick": kick, "t_end": t_end, "h": h,
-        "status": tr.status, "message": tr.message, "t_last": float(tr.t[-1]),
-        "n_steps": int(tr.n_steps), "max_steps": SIM_MAX_STEPS,
-        **{k: _rounded(a) for k, a in cols.items()},
-        **{k: _rounded(a) for k, a in (("Z_C", Z_C), ("axis", axis), ("e1", e1), ("e2", e2))},
-    }
+    return {**{k: _rounded(a) for k, a in columns.items()},
+            **{k: _rounded(a) for k, a in (("Z_C", Z_C), ("axis", axis), ("e1", e1),
+                                           ("e2", e2))}}

@@ -39,9 +39,10 @@ __all__ = ["ExplorerServer", "make_server", "explore", "LOOPBACK_HOSTS"]
 #: Hosts that mean "this machine only".
 LOOPBACK_HOSTS = ("127.0.0.1", "localhost", "::1")
 
-#: The static files served, by URL path.
+#: The static files served, by URL path: the page, its script, and the view module that the
+#: script loads (``view.js``, the notebook widget's module too).
 STATIC = {"/": "index.html", "/index.html": "index.html", "/explore.js": "explore.js",
-          "/explore.css": "explore.css"}
+          "/view.js": "view.js", "/explore.css": "explore.css"}
 
 ENDPOINTS = {"/api/map": api.map_payload, "/api/steady": api.steady_payload,
              "/api/simulate": api.simulate_payload}

@@ -11,27 +11,30 @@ size) and ``frames`` (the drawn disk along the run). :func:`play` draws any comp
 (a :class:`~rollingdisk.Trajectory` or a motion to rest,
 :class:`~rollingdisk.phases.motion.MotionResult`) in 3D with a time slider.
 
-The drawing is the ES module ``static/widget.js`` shipped in the package: nothing is
-loaded from the network.  anywidget is the optional extra ``rollingdisk[notebook]``.
+The records are the served explorer's (:mod:`rollingdisk.explore.api`: a click here is
+answered as ``/api/steady`` and ``/api/simulate`` answer it there), and the drawing is the
+served explorer's too: the ES module ``static/view.js`` (its default export ``{render}`` is
+anywidget's entry), shipped in the package; nothing is loaded from the network.  anywidget
+is the optional extra ``rollingdisk[notebook]``.
 """
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
 
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
-__all__ = ["widget", "play", "ESM_PATH"]
+__all__ = ["widget", "play", "traits", "ESM_PATH"]
 
-#: The ES module the widget draws with (shipped in the wheel with the package data).
-ESM_PATH = Path(__file__).with_name("static") / "widget.js"
+#: The ES module the widget draws with, the served explorer's view module (shipped in the
+#: wheel with the package data).
+ESM_PATH = Path(__file__).with_name("static") / "view.js"
 #: Map resolution (points per axis) and the largest omega30 of the map.
 MAP_N, MAP_OMEGA30_MAX = 41, 3.0
-#: The kicked motion drawn after a click: tilt kick [rad], span [sqrt(a/g)], frames.
-KICK, T_END, FRAMES = 0.02, 30.0, 120
+#: The kicked motion drawn after a click: tilt kick [rad], span [sqrt(a/g)], stored points.
+KICK, T_END, FRAMES = 0.02, 30.0, 600
 
 
 def _anywidget():
@@ -88,56 +91,83 @@ def _disk_record(disk) -> dict:
 
 def _map_record(disk, ground: str) -> dict:
     """The explorer's map of steady circles in the (theta0, omega30) plane (rows omega30,
-    columns theta0), each point as a click there answers (:mod:`rollingdisk.explore.api`)."""
-    from rollingdisk.explore.api import _map
+    columns theta0), each point as a click there answers (:func:`.api.map_payload`)."""
+    from rollingdisk.explore import api
 
-    return _map(ground, float(disk.h), "theta0-omega30", MAP_N, MAP_OMEGA30_MAX)
+    try:
+        return api.map_payload({"plane": ["theta0-omega30"], "n": [str(MAP_N)],
+                                "ymax": [repr(MAP_OMEGA30_MAX)]}, _defaults(disk, ground))
+    except api.ApiError as exc:  # a disk beyond the explorer's (h in [0, 100])
+        raise ParameterError(f"disk: {exc}") from None
 
 
-def _pose_frames(h: float, X, Y, psi, theta, phi, Z=None, t=None) -> dict:
-    """The drawn disk at each point: rim circles and contact point, as flat lists."""
-    from rollingdisk.plotting.animation import disk_pose
-
-    rims, contact = [], []
-    for i in range(len(X)):
-        kw = {} if Z is None else {"Z_C": float(Z[i])}
-        pose = disk_pose(h, float(X[i]), float(Y[i]), float(psi[i]), float(theta[i]),
-                         float(phi[i]), n=24, **kw)
-        rims.append([np.round(r.T, 5).tolist() for r in pose.rims])
-        contact.append(np.round(pose.contact, 5).tolist())
-    return {"t": [float(x) for x in (t if t is not None else range(len(X)))],
-            "rims": rims, "contact": contact, "h": h}
+def _defaults(disk, ground: str) -> dict:
+    """What the explorer's server is started with for ``disk``: its ``h`` and ground, and
+    the disk itself where it has a physical size (SI values beside the paper's)."""
+    return {"h": float(disk.h), "ground": ground,
+            "disk": disk if disk.radius is not None else None}
 
 
 def _steady_record(disk, ground: str, theta0: float, omega30: float) -> tuple[dict, dict]:
-    """``(motion, frames)`` after a click: the numbers and the kicked motion."""
-    import rollingdisk as rd
+    """``(motion, frames)`` after a click at ``(theta0, omega30)``: the explorer's answers
+    (:func:`.api.steady_payload`, :func:`.api.simulate_payload`): the steady motion's numbers
+    (or why there is none) and its motion kicked by :data:`KICK`, or ``{}`` where it cannot
+    be simulated (too fast)."""
+    from rollingdisk.explore import api
 
+    query = {"theta0": [repr(theta0)], "omega30": [repr(omega30)]}
+    defaults = _defaults(disk, ground)
     try:
-        m = rd.steady_motion(disk, ground, theta0, omega30=omega30)
-    except rd.NoSteadyMotion as exc:
+        motion = api.steady_payload(query, defaults)
+    except api.ApiError as exc:  # outside the explorer's ranges: said like no motion
         return {"exists": False, "theta0": theta0, "omega30": omega30,
                 "reason": str(exc)}, {}
-    s = rd.stability(m)
-    rec = {k: v for k, v in {**m.as_dict(), **s.as_dict()}.items()
-           if isinstance(v, (int, float, str, bool)) or v is None}
-    rec = {k: (None if isinstance(v, float) and not math.isfinite(v) else v)
-           for k, v in rec.items()}
-    rec["exists"] = True
-    if disk.radius is not None:
-        ts = float(disk.time_to_si(1.0))
-        rec["si"] = {"Omega0 [rad/s]": m.Omega0 / ts, "omega30 [rad/s]": m.omega30 / ts,
-                     "omega20 [rad/s]": m.omega20 / ts,
-                     "r_C [m]": float(disk.length_to_si(m.r_C)),
-                     "period [s]": (s.period * ts if s.period is not None
-                                    and math.isfinite(s.period) else None)}
-    frames = {}
-    if abs(m.Omega0) <= 20.0:
-        t = np.linspace(0.0, T_END, FRAMES)
-        tr = rd.simulate_steady(m, T_END, perturb=KICK, t_eval=t, max_steps=20_000)
-        frames = _pose_frames(disk.h, tr.X_C, tr.Y_C, tr.psi, tr.theta, tr.phi, t=tr.t)
-        frames["status"] = tr.status
-    return rec, frames
+    if not motion["exists"]:
+        return motion, {}
+    try:
+        frames = api.simulate_payload({**query, "kick": [repr(KICK)], "t_end": [repr(T_END)],
+                                       "points": [str(FRAMES)]}, defaults)
+    except api.ApiError:  # faster than the explorer simulates (|Omega0| > 20)
+        return motion, {}
+    return motion, frames
+
+
+def traits(disk="euro-1", ground: str = "rough", selected=None) -> dict:
+    """The traits :func:`widget` sends the browser, computed without a browser or anywidget
+    (a static picture of what the view draws; tests).
+
+    Parameters
+    ----------
+    disk : Disk, float or str
+        As in :func:`widget`.
+    ground : {"rough", "smooth"}
+    selected : (theta0, omega30), optional
+        A click on the map: the tilt [rad] and the spin about the axis [``sqrt(g/a)``].
+
+    Returns
+    -------
+    dict
+        ``disk`` (``h`` [``a``]; ``radius_m``, ``time_s`` = ``sqrt(a/g)`` [s] for a disk with
+        a physical size), ``map`` (:func:`.api.map_payload` in the (theta0, omega30) plane);
+        with ``selected``, ``motion`` (:func:`.api.steady_payload`) and ``frames``
+        (:func:`.api.simulate_payload`: the motion kicked by :data:`KICK` over
+        :data:`T_END`, ``{}`` where it is too fast to simulate or does not exist).
+
+    Raises
+    ------
+    ParameterError
+        ``ground`` unknown or the disk beyond the explorer's ``h`` in [0, 100].
+    ParameterTypeError
+        ``disk`` of another type.
+    """
+    if ground not in ("rough", "smooth"):
+        raise ParameterError(f"ground must be 'rough' or 'smooth', got {ground!r}")
+    d = _disk(disk)
+    out = {"disk": _disk_record(d), "map": _map_record(d, ground)}
+    if selected is not None:
+        out["selected"] = [float(selected[0]), float(selected[1])]
+        out["motion"], out["frames"] = _steady_record(d, ground, *out["selected"])
+    return out
 
 
 def widget(disk="euro-1", ground: str = "rough"):
@@ -159,8 +189,7 @@ def widget(disk="euro-1", ground: str = "rough"):
         selection; ``motion["si"]`` holds SI values for a disk with a physical size).
     """
     anywidget, traitlets = _anywidget()
-    if ground not in ("rough", "smooth"):
-        raise ParameterError(f"ground must be 'rough' or 'smooth', got {ground!r}")
+    first = traits(disk, ground)
     d = _disk(disk)
 
     class DiskExplorer(_view_class()):
@@ -171,7 +200,7 @@ def widget(disk="euro-1", ground: str = "rough"):
                 return
             self.motion, self.frames = _steady_record(d, ground, float(sel[0]), float(sel[1]))
 
-    return DiskExplorer(disk=_disk_record(d), map=_map_record(d, ground))
+    return DiskExplorer(**first)
 
 
 def play(result, n_frames: int = 120):
@@ -188,31 +217,36 @@ def play(result, n_frames: int = 120):
     Returns
     -------
     anywidget.AnyWidget
-        The same view as :func:`widget` without a map: ``frames`` holds the drawn disk.
+        The same view as :func:`widget` without a map: ``frames`` holds the track drawn
+        (:func:`.api.pose_track`: per frame ``t``, the centre C and the contact point P, the
+        disk's axis and body-fixed radii; ``theta, psi, phi`` too for a Trajectory).
     """
     anywidget, traitlets = _anywidget()
+    from rollingdisk.explore import api
     from rollingdisk.phases.motion import MotionResult
     from rollingdisk.results.trajectory import Trajectory
     from rollingdisk.util.checks import check_int
 
+    if not isinstance(result, MotionResult | Trajectory):
+        raise ParameterTypeError(f"result must be a Trajectory or a MotionResult, got "
+                                 f"{type(result).__name__}")
     n_frames = check_int("n_frames", n_frames, low=2, high=2000)
+    h = float(result.disk.h)
     if isinstance(result, MotionResult):
         from rollingdisk.plotting.motion_anim import motion_poses
 
-        t, poses = motion_poses(result, n_frames, n=24)
-        frames = {"t": [float(x) for x in t], "h": float(result.disk.h),
-                  "rims": [[np.round(r.T, 5).tolist() for r in p.rims] for p in poses],
-                  "contact": [np.round(p.contact, 5).tolist() for p in poses]}
-        disk = result.disk
-    elif isinstance(result, Trajectory):
+        t, poses = motion_poses(result, n_frames, n=api.POSE_RIM)
+        cols = {"X_C": [p.center[0] for p in poses], "Y_C": [p.center[1] for p in poses],
+                "X_P": [p.contact[0] for p in poses], "Y_P": [p.contact[1] for p in poses]}
+    else:
+        from rollingdisk.plotting.animation import disk_pose
+
         t = np.linspace(result.t[0], result.t[-1], n_frames)
         cols = {k: np.interp(t, result.t, getattr(result, k))
-                for k in ("X_C", "Y_C", "psi", "theta", "phi")}
-        frames = _pose_frames(result.disk.h, cols["X_C"], cols["Y_C"], cols["psi"],
-                              cols["theta"], cols["phi"], t=t)
-        disk = result.disk
-    else:
-        raise ParameterTypeError(f"result must be a Trajectory or a MotionResult, got "
-                                 f"{type(result).__name__}")
-
-    return _view_class()(disk=_disk_record(disk), frames=frames)
+                for k in ("theta", "psi", "phi", "X_C", "Y_C")}
+        poses = [disk_pose(h, *(float(cols[k][i]) for k in ("X_C", "Y_C", "psi", "theta",
+                                                               "phi")), n=api.POSE_RIM)
+                 for i in range(t.size)]
+        cols.update(X_P=[p.contact[0] for p in poses], Y_P=[p.contact[1] for p in poses])
+    frames = {"h": h, **api.pose_track(h, poses, t=t, **cols)}
+    return _view_class()(disk=_disk_record(result.disk), frames=frames)
