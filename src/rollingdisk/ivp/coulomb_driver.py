@@ -298,8 +298,14 @@ class _Hybrid:
             announce("compiling rollingdisk's Coulomb loop (once per machine; usually 10-60 s)")
         try:
             _fs.compiled()
-        except Exception:  # noqa: BLE001 - numba broken: stay on the scipy path
+        except Exception as exc:  # noqa: BLE001 - numba broken: stay on the scipy path
             _compile_failed = True
+            import warnings
+
+            warnings.warn(f"the compiled Coulomb loop could not be built ({type(exc).__name__}: "
+                          f"{str(exc).splitlines()[0] if str(exc) else ''}); Coulomb runs go on "
+                          "on scipy's path, with the same steps but slower", RuntimeWarning,
+                          stacklevel=2)
             return False
         self.compiled = True
         return True
