@@ -87,6 +87,22 @@ def _si_inputs(disk) -> None:
             object.__setattr__(disk, name, parse(value, name))
 
 
+def _rim_radius(disk) -> float:
+    """The rim radius in units of ``a``, checked: ``0 <= rho <= h``; a physical length
+    (text with a unit, a pint quantity) divided by the disk's radius."""
+    rho = disk.rim_radius
+    if isinstance(rho, str) or hasattr(rho, "dimensionality"):
+        from rollingdisk.model import quantity
+
+        rho = quantity.parse_length(rho, "rim_radius")
+        if disk.radius is None:
+            raise ParameterError("rim_radius given as a length needs the disk's radius "
+                                 "(Disk(h, radius=..., rim_radius=...)); without one give it "
+                                 "in units of the radius, 0 <= rim_radius <= h")
+        rho = rho / disk.radius
+    return check_real("rim_radius", rho, low=0.0, high=disk.h)
+
+
 def check_ground(ground) -> str:
     """Return ``ground`` if it is ``"rough"`` or ``"smooth"``, else raise ``ValueError``."""
     if ground not in GROUNDS:
@@ -110,6 +126,13 @@ class Disk:
         Physical mass ``m`` [kg], ``> 0``. Needed only for forces and energies in SI units.
     gravity : float, optional
         Gravitational acceleration ``g`` [m/s^2], ``> 0``; standard gravity by default.
+    rim_radius : float, str or pint quantity, optional
+        Radius ``rho`` of the rounded rim in units of the radius ``a``, ``0 <= rho <= h``
+        (the meridian is a flat face, a quarter circle of radius ``rho``, a flat tread of
+        length ``2 (h - rho)``, a quarter circle, a flat face; see
+        :mod:`rollingdisk.model.rim`).  Text with a unit (``"0.3mm"``) or a pint quantity
+        is a physical length, divided by ``radius`` (which it then needs).  ``0`` (the
+        default) is the paper's sharp-edged disk, and everything is as without it.
 
     Examples
     --------
@@ -125,6 +148,13 @@ class Disk:
     radius: float | None = None
     mass: float | None = None
     gravity: float = STANDARD_GRAVITY
+    rim_radius: float = 0.0
+
+    def __repr__(self) -> str:
+        # the sharp disk's repr is the one it always had; the rim shows only when rounded
+        rim = f", rim_radius={self.rim_radius!r}" if self.rim_radius != 0.0 else ""
+        return (f"Disk(h={self.h!r}, radius={self.radius!r}, mass={self.mass!r}, "
+                f"gravity={self.gravity!r}{rim})")
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "h", check_h(self.h))
@@ -136,18 +166,24 @@ class Disk:
             object.__setattr__(self, "mass", check_real("mass", self.mass, low=0.0, low_open=True))
         object.__setattr__(self, "gravity",
                            check_real("gravity", self.gravity, low=0.0, low_open=True))
+        object.__setattr__(self, "rim_radius", _rim_radius(self))
 
     @classmethod
     def from_dimensions(cls, radius: float, thickness: float, mass: float | None = None,
-                        gravity: float = STANDARD_GRAVITY) -> Disk:
-        """A disk from its physical radius and full thickness ``2h a`` (both in metres)."""
+                        gravity: float = STANDARD_GRAVITY, rim_radius=0.0) -> Disk:
+        """A disk from its physical radius and full thickness ``2h a`` (both in metres);
+        a ``rim_radius`` as a number is in metres too (text with a unit, a pint quantity
+        as in :class:`Disk`)."""
         from rollingdisk.model.quantity import parse_length
 
         radius = check_real("radius", _plain(radius, parse_length, "radius"), low=0.0,
                             low_open=True)
         thickness = check_real("thickness", _plain(thickness, parse_length, "thickness"),
                                low=0.0)
-        return cls(h=thickness / (2.0 * radius), radius=radius, mass=mass, gravity=gravity)
+        if not (isinstance(rim_radius, str) or hasattr(rim_radius, "dimensionality")):
+            rim_radius = check_real("rim_radius", rim_radius, low=0.0) / radius
+        return cls(h=thickness / (2.0 * radius), radius=radius, mass=mass, gravity=gravity,
+                   rim_radius=rim_radius)
 
     # -- inertia, eq. (10) -------------------------------------------------------------
     @property
