@@ -37,8 +37,7 @@ def test_inertia_is_the_integral_over_the_body():
 
 @pytest.mark.parametrize("ground", ["rough", "smooth"])
 def test_kernels_agree_with_newton_euler_and_lagrange(ground):
-    from rollingdisk.symbolic.rounded import (derive_rounded, lagrange_rounded,
-                                              rounded_lambdified)
+    from rollingdisk.symbolic.rounded import derive_rounded, lagrange_rounded, rounded_lambdified
 
     assert derive_rounded().energy_rate == 0  # eq. (12) holds for the rounded body
     ne = rounded_lambdified()[f"{ground}_omega_dot"]

@@ -39,7 +39,6 @@ from rollingdisk.symbolic.derivation import (
     omega1,
     omega2,
     omega3,
-    psi,
     theta,
 )
 
