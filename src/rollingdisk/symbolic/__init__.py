@@ -14,6 +14,8 @@ Outside the numeric core: nothing in the core imports this package.
   registry of checks and the generated part of docs/errata.md; :mod:`.checks3` and
   :mod:`.checks4` hold the checks, one registered function per statement of :mod:`.printed`.
 
+- :mod:`.rounded`: the disk with a rounded rim (Routh's body of revolution): Newton-Euler,
+  checked by Lagrange's equations with multipliers, and its inertia by integration.
 - :mod:`.report`: :func:`check_equations` and :func:`format_table`, what ``rollingdisk derive``
   prints.
 
@@ -28,4 +30,7 @@ __getattr__, __dir__, __all__ = _attach(__name__, {
     "derive": "rollingdisk.symbolic.derivation",
     "format_table": "rollingdisk.symbolic.report",
     "lambdified": "rollingdisk.symbolic.derivation",
+    "derive_rounded": "rollingdisk.symbolic.rounded",
+    "lagrange_rounded": "rollingdisk.symbolic.rounded",
+    "rounded_inertia": "rollingdisk.symbolic.rounded",
 })
