@@ -92,9 +92,11 @@ def _rim_radius(disk) -> float:
     (text with a unit, a pint quantity) divided by the disk's radius."""
     rho = disk.rim_radius
     if isinstance(rho, str) or hasattr(rho, "dimensionality"):
-        from rollingdisk.model import quantity
+        from rollingdisk.model.inputs import read_input
 
-        rho = quantity.parse_length(rho, "rim_radius")
+        how, rho, _ = read_input("length", rho, "rim_radius")  # 0 allowed, unlike radius
+        if how == "paper":  # "0.05a": already in units of the radius
+            return check_real("rim_radius", rho, low=0.0, high=disk.h)
         if disk.radius is None:
             raise ParameterError("rim_radius given as a length needs the disk's radius "
                                  "(Disk(h, radius=..., rim_radius=...)); without one give it "
@@ -131,7 +133,8 @@ class Disk:
         (the meridian is a flat face, a quarter circle of radius ``rho``, a flat tread of
         length ``2 (h - rho)``, a quarter circle, a flat face; see
         :mod:`rollingdisk.model.rim`).  Text with a unit (``"0.3mm"``) or a pint quantity
-        is a physical length, divided by ``radius`` (which it then needs).  ``0`` (the
+        is a physical length (text without a unit: metres, as for ``radius``; ``"0.05a"``:
+        units of ``a``), divided by ``radius`` (which it then needs).  ``0`` (the
         default) is the paper's sharp-edged disk, and everything is as without it.
 
     Examples
