@@ -143,3 +143,16 @@ def test_sphere_keeps_its_angular_velocity(rough):
         wf = np.array([w[0], w[2] * math.tan(th), w[2]])
         assert np.max(np.abs(d + np.cross(wf, w))) < 1e-13
         assert rounded_normal_force(rough, 1.0, 1.0, k1, k2, th, *w) == pytest.approx(1.0)
+
+
+def test_sharp_disk_functions_refuse_a_rounded_rim():
+    """The paper's formulas and the sharp-disk simulation do not describe a rounded rim:
+    they say so instead of answering for the sharp disk."""
+    import rollingdisk as rd
+
+    d = Disk(0.1, rim_radius=0.02)
+    for call in (lambda: rd.thresholds(d), lambda: rd.varpi2_closed_form(d, "rough", 0.3, 1, 1),
+                 lambda: rd.simulate(d, "rough", (0, 1), [0, 0, 0, 0.3, 0, 0, 2, 0.5])):
+        with pytest.raises(ParameterError, match="rounded rim.*rim_radius = 0.02"):
+            call()
+    assert rd.thresholds(Disk(0.1, rim_radius=0.0)) == rd.thresholds(Disk(0.1))

@@ -22,7 +22,7 @@ from rollingdisk.util.checks import check_real
 from rollingdisk.util.errors import ParameterError
 
 __all__ = ["Disk", "DEFAULT_H", "GROUNDS", "H_MAX", "STANDARD_GRAVITY", "check_ground", "check_h",
-           "h_of"]
+           "h_of", "sharp_h"]
 
 
 
@@ -47,17 +47,29 @@ STANDARD_GRAVITY = 9.80665
 def check_h(h) -> float:
     """``h`` as a float, or ``ValueError``: the half-thickness must lie in ``[0, H_MAX]``.
 
-    A :class:`Disk` stands for its half-thickness: ``check_h(disk) == disk.h``.
+    A :class:`Disk` stands for its half-thickness: ``check_h(disk) == disk.h``; a disk with
+    a rounded rim is refused (:func:`sharp_h`).
     """
     if isinstance(h, Disk):
-        return h.h
+        return sharp_h(h)
     return check_real("h", h, low=0.0, high=H_MAX)
+
+
+def sharp_h(disk) -> float:
+    """``disk.h`` of a sharp-edged disk; ``ParameterError`` for one with a rounded rim, which
+    the paper's formulas do not describe (:mod:`rollingdisk.theory.rounded` does)."""
+    if disk.rim_radius != 0.0:
+        raise ParameterError(
+            f"this function models the paper's sharp-edged disk, and this disk has a rounded "
+            f"rim (rim_radius = {disk.rim_radius:g}): use rollingdisk.theory.rounded "
+            "(rounded_steady_motion, rounded_varpi2, rounded_thresholds), or rim_radius = 0")
+    return disk.h
 
 
 def h_of(h):
     """``disk.h`` for a :class:`Disk`, anything else unchanged (the functions that take an
-    ``h`` or an array of them also take a disk)."""
-    return h.h if isinstance(h, Disk) else h
+    ``h`` or an array of them also take a disk; a rounded rim is refused, :func:`sharp_h`)."""
+    return sharp_h(h) if isinstance(h, Disk) else h
 
 
 def _number(x):

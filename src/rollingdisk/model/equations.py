@@ -35,7 +35,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from rollingdisk.model.disk import Disk, check_ground
+from rollingdisk.model.disk import Disk, check_ground, sharp_h
 from rollingdisk.model.geometry import _geometry, _inertia
 from rollingdisk.model.state import _reduced_state, _shape_error, as_state, state_names
 from rollingdisk.util.checks import real_array
@@ -160,11 +160,13 @@ _normal_force, _side_normal_force = normal_force, side_normal_force
 # public API
 # ---------------------------------------------------------------------------------------
 def check_disk(disk) -> Disk:
-    """``disk`` if it is a :class:`~rollingdisk.model.disk.Disk`, else
-    :class:`~rollingdisk.util.errors.ParameterTypeError` naming it."""
+    """``disk`` if it is a sharp-edged :class:`~rollingdisk.model.disk.Disk`, else
+    :class:`~rollingdisk.util.errors.ParameterTypeError` naming it (a rounded rim:
+    :class:`~rollingdisk.util.errors.ParameterError`, :func:`~rollingdisk.model.disk.sharp_h`)."""
     if not isinstance(disk, Disk):
         raise ParameterTypeError(f"disk must be a rollingdisk.Disk, got {type(disk).__name__}"
                                  f" {disk!r}")
+    sharp_h(disk)  # these equations are the sharp-edged disk's (model.rim: a rounded rim)
     return disk
 
 
