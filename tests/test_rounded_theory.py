@@ -154,3 +154,21 @@ def test_rounded_theory_refuses_bad_input():
                               r_C=rounded_r_C_star(disk, 0.05) + 1.0)
     with pytest.raises(ParameterError, match="ground"):
         rounded_varpi2(disk, "icy", 0.3, 1.0, 1.0)
+
+
+@pytest.mark.slow
+def test_fully_rounded_disk_rocks_over_its_rim_and_conserves_energy():
+    """rho = h: the tread is a half circle, so the contact moves smoothly through theta = 0.
+    A disk rolling straight on rough ground, kicked sideways, rocks across theta = 0 with
+    no impact (F_z > 0), its energy kept to <= 1e-9 over 1000 time units (about 7 s)."""
+    from rollingdisk.model.rim import rounded_energy, rounded_normal_force
+
+    h = rho = 0.2
+    k1, k2 = rim_inertia(h, rho)
+    sol = solve_ivp(lambda t, x: rounded_reduced_rhs(True, h, rho, k1, k2, x), (0.0, 1000.0),
+                    [0.0, 0.2, 3.0, 0.0], method="DOP853", rtol=1e-13, atol=1e-13)
+    assert sol.success
+    E = rounded_energy(True, h, rho, k1, k2, *sol.y)
+    assert np.max(np.abs(E - E[0])) <= 1e-9 * abs(E[0])
+    assert np.min(rounded_normal_force(True, h, rho, k1, k2, *sol.y)) > 0.5
+    assert np.count_nonzero(np.diff(np.sign(sol.y[0]))) > 1000  # crossings of theta = 0
