@@ -84,9 +84,11 @@ def test_closed_form_varpi2_agrees_with_the_linearization():
     assert worst <= 1e-10
 
 
-def _simulated_varpi(disk, m, eps=1e-4):
+def _simulated_varpi(disk, m, eps=1e-6):
     """The angular frequency of theta in a run from the steady state with theta0 + eps,
-    from the mean spacing of the upward crossings of theta0's mean (rtol 1e-12)."""
+    from the mean spacing of the upward crossings of theta's mean (rtol 1e-12).  The kick
+    moves the motion onto a neighbouring steady motion whose varpi differs by O(eps): with
+    eps = 1e-6 the measured frequencies agree to about 5e-7."""
     k1, k2 = rim_inertia(disk.h, disk.rim_radius)
     rough = m.ground == "rough"
     x0 = m.initial_state()
