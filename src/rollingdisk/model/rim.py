@@ -186,7 +186,8 @@ def _rough(rho, k1, k2, s, c, p, A, H, y_P, z_P, gyro, w1, w2, w3):
 
 def rounded_normal_force(rough, h, rho, k1, k2, theta, w1, w2, w3):
     """Normal force ``F_z = 1 + (z_P + rho) omega1^2 - y_P d omega1/dt`` [units ``m g``]:
-    eq. (11) with the rounded contact (``d y_P/d theta = -(z_P + rho)``)."""
+    eq. (11) with the rounded contact (``d y_P/d theta = -(z_P + rho)``, derived in
+    :mod:`rollingdisk.symbolic.rounded`).  Arguments as :func:`rounded_omega_dot`."""
     y_P, z_P = rim_contact(h, rho, theta)[3:]
     d1 = rounded_omega_dot(rough, h, rho, k1, k2, theta, w1, w2, w3)[0]
     return 1.0 + (z_P + rho) * w1 * w1 - y_P * d1
@@ -195,9 +196,9 @@ def rounded_normal_force(rough, h, rho, k1, k2, theta, w1, w2, w3):
 def rounded_energy(rough, h, rho, k1, k2, theta, w1, w2, w3):
     """Mechanical energy [units ``m g a``], eq. (13) with ``Z_C`` of :func:`centre_height`:
     on rough ground with ``v_C = -omega x r_CP``, on smooth ground less the constant
-    kinetic energy of the horizontal motion of C."""
+    kinetic energy of the horizontal motion of C.  Arguments as :func:`rounded_omega_dot`;
+    conserved along it (tested)."""
     hp, A, H, y_P, z_P = rim_contact(h, rho, theta)
-    c = np.cos(theta)
     if rough:
         v_x = A * w2 - H * w3  # v_P = 0: v_C = -omega x r_CP (eq. 37 rounded)
         v_y = w1 * z_P
@@ -205,13 +206,14 @@ def rounded_energy(rough, h, rho, k1, k2, theta, w1, w2, w3):
         v_x = 0.0 * w1
         v_y = 0.0 * w1
     v_z = -w1 * y_P
-    del c
     return (0.5 * (v_x * v_x + v_y * v_y + v_z * v_z) + 0.5 * k1 * (w1 * w1 + w3 * w3)
             + 0.5 * k2 * w2 * w2 - z_P)
 
 
 def rounded_reduced_rhs(rough, h, rho, k1, k2, x):
-    """Right-hand side of the reduced system ``x = (theta, omega1, omega2, omega3)``."""
+    """Right-hand side of the reduced system ``x = (theta, omega1, omega2, omega3)``
+    [rad, ``sqrt(g/a)``]: ``d theta/dt = omega1`` (eq. 2) and :func:`rounded_omega_dot`;
+    autonomous and closed on both grounds, as for the sharp disk."""
     theta, w1, w2, w3 = x[0], x[1], x[2], x[3]
     d1, d2, d3 = rounded_omega_dot(rough, h, rho, k1, k2, theta, w1, w2, w3)
     return w1, d1, d2, d3

@@ -52,7 +52,8 @@ K1, K2 = sp.symbols("K1 K2", positive=True)
 
 @lru_cache(maxsize=1)
 def rounded_inertia():
-    """``(V, k1^2, k2^2)`` of the rounded disk as sympy expressions in ``h, rho``.
+    """``(V, k1^2, k2^2, h)``: the rounded disk's inertia as sympy expressions in ``h, rho``
+    (``h`` the half-thickness symbol they use, ``rho`` this module's).
 
     ``V`` is the volume (units ``a^3``), ``k1^2`` the squared radius of gyration about a
     diameter and ``k2^2`` about the axis (units ``a^2``): the cylinder ``r <= 1, |z| <= h``
