@@ -172,15 +172,24 @@ def rounded_steady_motion(disk: Disk, ground: str, theta0: float, *,
         raise ParameterError("Omega0 must be != 0 (Omega0 = 0 is a straight line)")
     k1, k2, s, c, p, A, H, y_P, _ = _parts(disk, theta0)
     w3 = Omega0 * c
-    w2 = rounded_omega20(disk, ground, theta0, w3)
+    w2 = _finite(rounded_omega20(disk, ground, theta0, w3), "omega20")
     if ground == "rough":
         r_C_value = -(A * w2 - H * w3) / Omega0  # v_Cx = -r_C Omega0, eq. (24)
     else:
         r_C_value = 0.0
     return RoundedSteadyMotion(
-        disk=disk, ground=ground, theta0=theta0, Omega0=Omega0, omega0=w2 - Omega0 * s,
-        omega20=w2, omega30=w3, r_C=r_C_value, r_P=r_C_value + y_P,
+        disk=disk, ground=ground, theta0=theta0, Omega0=Omega0,
+        omega0=_finite(w2 - Omega0 * s, "omega0"), omega20=w2, omega30=w3,
+        r_C=_finite(r_C_value, "r_C"), r_P=r_C_value + y_P,
         varpi2=rounded_varpi2(disk, ground, theta0, w2, w3))
+
+
+def _finite(x: float, name: str) -> float:
+    """``x``, or :class:`~rollingdisk.ParameterError` when the inputs made it overflow."""
+    if not math.isfinite(x):
+        raise ParameterError(f"{name} leaves floating-point range for these inputs (got {x!r});"
+                             " give smaller speeds")
+    return x
 
 
 def _varpi2_J(k1, k2, rho, s, c, p, A, H, y_P, dy_P, rough, w2, w3):
@@ -230,7 +239,7 @@ def rounded_varpi2(disk: Disk, ground: str, theta0: float, omega20: float,
     k1, k2, s, c, p, A, H, y_P, dy_P = _parts(disk, theta0)
     num, J = _varpi2_J(k1, k2, disk.rim_radius, s, c, p, A, H, y_P, dy_P, ground == "rough",
                        w2, w3)
-    return num / J
+    return _finite(num / J, "varpi^2")
 
 
 def rounded_varpi2_linearized(disk: Disk, ground: str, theta0: float, omega20: float,
