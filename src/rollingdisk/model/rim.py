@@ -1,5 +1,5 @@
 """The rounded rim: geometry, inertia and equations of motion of a disk whose rim edges are
-rounded with radius ``rho`` (issue 34).  Dimensionless units (m = a = g = 1).
+rounded with radius ``rho``.  Dimensionless units (m = a = g = 1).
 
 The body is the homogeneous solid of revolution whose meridian is a flat face, a quarter
 circle of radius ``rho``, a flat tread of length ``2 (h - rho)``, a quarter circle and a

@@ -1,4 +1,4 @@
-"""Steady motions and their stability for the disk with a rounded rim (issue 34).
+"""Steady motions and their stability for the disk with a rounded rim.
 
 Sections 3-4 of the paper generalised to the body of :mod:`rollingdisk.model.rim`: the
 contact below C at ``r_CP = (0, -H, -A)`` in C xi eta zeta, ``A = 1 - rho + rho cos``,
