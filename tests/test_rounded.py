@@ -32,7 +32,7 @@ from rollingdisk.util.errors import ParameterError
 def _random(rng, n, h_max=2.0):
     for _ in range(n):
         h = rng.uniform(0.0, h_max)
-        yield (h, rng.uniform(0.0, h), rng.uniform(-1.4, 1.4) or 0.3,
+        yield (h, rng.uniform(0.0, min(h, 1.0)), rng.uniform(-1.4, 1.4) or 0.3,
                *rng.normal(scale=1.5, size=3))
 
 
@@ -47,8 +47,13 @@ def test_disk_default_rim_is_sharp_and_repr_unchanged():
 
 @pytest.mark.parametrize("bad", [-0.01, 0.2, float("nan")])
 def test_disk_rim_radius_range(bad):
-    with pytest.raises(ParameterError, match=r"rim_radius.*\[0, 0\.17\]"):
+    with pytest.raises(ParameterError, match=r"rim_radius.*\[0, "):
         Disk(0.17, rim_radius=bad)
+    with pytest.raises(ParameterError, match=r"rim_radius must lie in \[0, min\(h, 1\)\]"):
+        Disk(0.17, rim_radius=0.2)
+    with pytest.raises(ParameterError, match=r"= \[0, 1\]"):  # the arcs fit in the radius
+        Disk(3.0, rim_radius=1.5)
+    assert Disk(3.0, rim_radius=1.0).rim_radius == 1.0
 
 
 def test_disk_rim_radius_with_units():

@@ -49,11 +49,12 @@ def test_zero_rim_gives_the_sharp_thresholds(capsys):
 
 
 @pytest.mark.parametrize("argv, words", [
-    (("--h", "0.2", "--rim-radius", "0.3"), "--rim-radius must lie in [0, h]"),
-    (("--disk", "euro-1", "--rim-radius", "3mm"), "--rim-radius must lie in [0, h]"),
+    (("--h", "0.2", "--rim-radius", "0.3"), "--rim-radius must lie in [0, min(h, 1)]"),
+    (("--disk", "euro-1", "--rim-radius", "3mm"), "--rim-radius must lie in [0, min(h, 1)]"),
     (("--h", "0.2", "--rim-radius", "-1"), "rim_radius must lie in [0, inf)"),
     (("--h", "0.2", "--rim-radius", "1mm"), "has a unit"),
     (("--h", "0.2", "--rim-radius", "1 parsec/s"), "--rim-radius"),
+    (("--h", "3", "--rim-radius", "1.5"), "[0, min(h, 1)] = [0, 1]"),
 ])
 def test_bad_rim_radius_is_one_line_and_exit_2(capsys, argv, words):
     with pytest.raises(SystemExit) as exc:

@@ -25,7 +25,7 @@ def test_inertia_is_the_integral_over_the_body():
     rng = np.random.default_rng(2)
     for _ in range(50):
         hh = rng.uniform(0.0, 3.0)
-        r = rng.uniform(0.0, hh)
+        r = rng.uniform(0.0, min(hh, 1.0))
         want = [float(x) for x in f(hh, r)] if r > 0 else None
         got = rim_inertia(hh, r)
         if want is not None:
@@ -45,7 +45,7 @@ def test_kernels_agree_with_newton_euler_and_lagrange(ground):
     worst_ne = worst_la = 0.0
     for _ in range(60):
         h = rng.uniform(0.0, 2.0)
-        rho = rng.uniform(0.0, h)
+        rho = rng.uniform(0.0, min(h, 1.0))
         th = rng.uniform(-1.3, 1.3)
         w = rng.normal(size=3)
         k1, k2 = rim_inertia(h, rho)

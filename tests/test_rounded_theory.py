@@ -34,7 +34,7 @@ from rollingdisk.util.errors import ParameterError
 def _motions(rng, n, rho_zero=False):
     for i in range(n):
         h = rng.uniform(0.0, 2.0)
-        rho = 0.0 if rho_zero else rng.uniform(0.0, h)
+        rho = 0.0 if rho_zero else rng.uniform(0.0, min(h, 1.0))
         th = rng.uniform(0.02, 1.5)
         ground = "rough" if i % 2 else "smooth"
         yield Disk(h, rim_radius=rho), ground, th, rng.normal(scale=3.0) or 1.0

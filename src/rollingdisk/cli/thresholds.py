@@ -48,8 +48,8 @@ def configure(sub):
     g.add_argument("--rim-radius", type=quantity("rim_radius", "length", "--rim-radius",
                                                  low=0.0),
                    default=None, metavar="LENGTH",
-                   help="radius rho of the rounded rim, 0 <= rho <= h a: a length with a unit "
-                   "for a disk with a physical size (0.3mm), else in units of the radius a; "
+                   help="radius rho of the rounded rim, 0 <= rho <= min(h, 1) a: a length with "
+                   "a unit for a disk with a physical size (0.3mm), else in units of the radius a; "
                    "the thresholds of the rounded disk (theory/rounded.py) at its static tilt")
     add_json_arg(p)
     return p
@@ -62,10 +62,12 @@ def _rounded(disk, rho):
 
     from rollingdisk.util.errors import ParameterError
 
-    if not rho <= disk.h:
-        size = f" = {1e3 * disk.h * disk.radius:.6g} mm" if has_scale(disk) else ""
-        raise ParameterError(f"--rim-radius must lie in [0, h] = [0, {disk.h:.6g}]{size} "
-                             f"(at most half the thickness), got {rho:.6g} (units of a)")
+    high = min(disk.h, 1.0)
+    if not rho <= high:
+        size = f" = {1e3 * high * disk.radius:.6g} mm" if has_scale(disk) else ""
+        raise ParameterError(f"--rim-radius must lie in [0, min(h, 1)] = [0, {high:.6g}]{size} "
+                             f"(at most half the thickness and the radius), got {rho:.6g} "
+                             "(units of a)")
     return dataclasses.replace(disk, rim_radius=rho)
 
 

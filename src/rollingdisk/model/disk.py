@@ -100,7 +100,7 @@ def _si_inputs(disk) -> None:
 
 
 def _rim_radius(disk) -> float:
-    """The rim radius in units of ``a``, checked: ``0 <= rho <= h``; a physical length
+    """The rim radius in units of ``a``, checked: ``0 <= rho <= min(h, 1)``; a physical length
     (text with a unit, a pint quantity) divided by the disk's radius."""
     rho = disk.rim_radius
     if isinstance(rho, str) or hasattr(rho, "dimensionality"):
@@ -108,13 +108,25 @@ def _rim_radius(disk) -> float:
 
         how, rho, _ = read_input("length", rho, "rim_radius")  # 0 allowed, unlike radius
         if how == "paper":  # "0.05a": already in units of the radius
-            return check_real("rim_radius", rho, low=0.0, high=disk.h)
+            return _rim_in_range(disk, rho)
         if disk.radius is None:
             raise ParameterError("rim_radius given as a length needs the disk's radius "
                                  "(Disk(h, radius=..., rim_radius=...)); without one give it "
                                  "in units of the radius, 0 <= rim_radius <= h")
         rho = rho / disk.radius
-    return check_real("rim_radius", rho, low=0.0, high=disk.h)
+    return _rim_in_range(disk, rho)
+
+
+def _rim_in_range(disk, rho) -> float:
+    """``rho`` checked: ``0 <= rho <= min(h, 1)`` (the arcs fit in the half-thickness and in
+    the radius: their centres sit at ``h - rho >= 0`` and ``1 - rho >= 0``)."""
+    high = min(disk.h, 1.0)
+    rho = check_real("rim_radius", rho, low=0.0)
+    if rho > high:
+        raise ParameterError(f"rim_radius must lie in [0, min(h, 1)] = [0, {high:g}] (units of "
+                             f"the radius: at most the half-thickness and the radius), got "
+                             f"{rho!r}")
+    return rho
 
 
 def check_ground(ground) -> str:
@@ -141,7 +153,8 @@ class Disk:
     gravity : float, optional
         Gravitational acceleration ``g`` [m/s^2], ``> 0``; standard gravity by default.
     rim_radius : float, str or pint quantity, optional
-        Radius ``rho`` of the rounded rim in units of the radius ``a``, ``0 <= rho <= h``
+        Radius ``rho`` of the rounded rim in units of the radius ``a``,
+        ``0 <= rho <= min(h, 1)``
         (the meridian is a flat face, a quarter circle of radius ``rho``, a flat tread of
         length ``2 (h - rho)``, a quarter circle, a flat face; see
         :mod:`rollingdisk.model.rim`).  Text with a unit (``"0.3mm"``) or a pint quantity

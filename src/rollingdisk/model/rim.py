@@ -3,7 +3,7 @@ rounded with radius ``rho``.  Dimensionless units (m = a = g = 1).
 
 The body is the homogeneous solid of revolution whose meridian is a flat face, a quarter
 circle of radius ``rho``, a flat tread of length ``2 (h - rho)``, a quarter circle and a
-flat face (``0 <= rho <= h``; at ``rho = h`` the tread is a half circle, at ``rho = 0`` the
+flat face (``0 <= rho <= min(h, 1)``; at ``rho = h`` the tread is a half circle, at ``rho = 0`` the
 paper's sharp-edged disk).  In the tilted frame C xi eta zeta (eta the symmetry axis) the
 centre of the arc that touches sits at radial distance ``1 - rho`` below C and axial offset
 ``-hp``, ``hp = (h - rho) sgn(theta)`` (the rounded ``h~``).  For ``0 < |theta| < pi/2``
@@ -49,7 +49,7 @@ def rim_inertia(h, rho):
     h : float
         Half-thickness (units of ``a``).
     rho : float
-        Rim radius, ``0 <= rho <= h`` (units of ``a``).
+        Rim radius, ``0 <= rho <= min(h, 1)`` (units of ``a``).
 
     Returns
     -------
@@ -86,7 +86,7 @@ def rim_contact(h, rho, theta):
     Parameters
     ----------
     h, rho : float
-        Half-thickness and rim radius (units of ``a``), ``0 <= rho <= h``.
+        Half-thickness and rim radius (units of ``a``), ``0 <= rho <= min(h, 1)``.
     theta : float or ndarray
         Inclination [rad], ``|theta| < pi/2``; ``theta = 0`` counts as ``0+`` (as in
         :func:`rollingdisk.model.geometry.contact_geometry`).
