@@ -65,6 +65,13 @@ def test_disk_rim_radius_with_units():
         Disk(h=0.1, radius="11.625mm", rim_radius="2mm")  # > h a
     d = Disk.from_dimensions("23.25mm", "2.33mm", rim_radius="0.3mm")
     assert d.rim_radius == pytest.approx(0.3 / 23.25, rel=1e-12)
+    assert Disk(0.1, radius=0.01, rim_radius="0.05a").rim_radius == 0.05  # units of a
+    assert Disk(0.1, radius=0.01, rim_radius="0mm").rim_radius == 0.0
+    pint = pytest.importorskip("pint")
+    q = pint.UnitRegistry().Quantity(0.3, "mm")
+    assert Disk(0.1, radius="11.625mm", rim_radius=q).rim_radius == pytest.approx(0.3 / 11.625)
+    with pytest.raises(ParameterError, match="rim_radius must be a length"):
+        Disk(0.1, radius="11.625mm", rim_radius="0.3 s")
 
 
 # -- geometry --------------------------------------------------------------------------------
