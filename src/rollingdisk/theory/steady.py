@@ -366,6 +366,7 @@ def steady_motion(disk: Disk, ground: str, theta0: float, *, Omega0: float | Non
     ground = check_ground(ground)
     if not isinstance(disk, Disk):
         raise ParameterError(f"disk must be a Disk, got {type(disk).__name__}")
+    check_h(disk)  # the sharp-edged disk's (theory.rounded: a rounded rim)
     theta0 = _check_theta0(disk, theta0)
     given = [(n, v) for n, v in (("Omega0", Omega0), ("r_C", r_C), ("r_P", r_P),
                                  ("omega30", omega30)) if v is not None]
@@ -474,6 +475,7 @@ def straight_line(disk: Disk, ground: str, omega0: float, *, v_Cx0: float | None
     ground = check_ground(ground)
     if not isinstance(disk, Disk):
         raise ParameterError(f"disk must be a Disk, got {type(disk).__name__}")
+    check_h(disk)  # the sharp-edged disk's (theory.rounded: a rounded rim)
     omega0 = check_real("omega0", _paper(disk, "rolling_rate", omega0, "omega0"))
     v_Cx0 = None if v_Cx0 is None else _paper(disk, "speed", v_Cx0, "v_Cx0")
     v_Cy0 = _paper(disk, "speed", v_Cy0, "v_Cy0")
