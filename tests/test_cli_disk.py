@@ -190,6 +190,7 @@ def test_exact_json_converts_back(capsys):
     assert d["period_si"] == pytest.approx(d["period"] * math.sqrt(SCALE["a"] / SCALE["g"]))
 
 
+@pytest.mark.slow
 def test_sweep_json_with_a_disk(capsys, tmp_path):
     d = run_json(capsys, "sweep", "--ground", "rough", *DIMS, "--theta0", "0.5",
                  "--omega30", "1.5a", "--t-end", "2a", "--method", "dop853", "--workers", "1",

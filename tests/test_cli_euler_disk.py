@@ -40,6 +40,7 @@ def test_out_folder_complete(tmp_path, capsys):
     assert not list(tmp_path.glob(".*tmp*"))  # no temporary left behind
 
 
+@pytest.mark.slow
 def test_json_on_stdout_and_rerun_replaces(tmp_path, capsys):
     out = tmp_path / "run"
     for _ in range(2):  # an earlier result folder is replaced whole

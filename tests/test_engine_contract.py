@@ -24,7 +24,10 @@ from rollingdisk.model.equations import _rough_omega_dot, _rough_rhs
 from rollingdisk.model.outcomes import AT_REST
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
-PATHS = [pytest.param(False, id="python"), pytest.param(True, id="compiled")]
+#: The compiled path loads (or compiles) the one step loop and each model's functions:
+#: seconds to a minute, so it runs with the slow checks.
+PATHS = [pytest.param(False, id="python"),
+         pytest.param(True, id="compiled", marks=pytest.mark.slow)]
 FEW = settings(max_examples=4, deadline=None)
 TOL = 1e-10
 
@@ -330,6 +333,7 @@ def disk_rhs(t, y, p, out):
         out[i] = from_kernel[i]
 
 
+@pytest.mark.slow
 def test_the_disk_takes_the_steps_of_its_own_compiled_dop853():
     """Same arithmetic: the disk on rough ground (eqs. 1, 2, 10) through the contract takes
     the very steps of the disk's compiled DOP853 (``engine/numba_core.py``, guards off),

@@ -190,6 +190,7 @@ def _measured(ex, n_periods=6):
     return th_min, th_max, period, dpsi
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("ground", ["rough", "smooth"])
 def test_exact_agrees_with_long_simulation(ground):
     """>= 30 random bounded motions per ground: theta_min, theta_max and the period to

@@ -179,6 +179,7 @@ def test_disk_held_on_a_rim_edge_by_rolling_resistance_ends_at_rest():
     assert r.t_end < 5.0 and not np.any(r.final_state[6:12])
 
 
+@pytest.mark.slow
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(h=st.floats(0.05, 0.8), mu=st.floats(0.1, 1.0), vx=st.floats(-1, 1),
        vy=st.floats(-0.3, 0.3), w2=st.floats(-1, 1), w3=st.floats(-3, 3),

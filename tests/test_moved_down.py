@@ -72,6 +72,7 @@ def test_stability_agreement_counts_far_points_only():
     assert stability_agreement(ds.drop_vars("stable_simulated")) is None
 
 
+@pytest.mark.slow
 def test_map_sweep_agrees_with_the_closed_form():
     pytest.importorskip("xarray")
     from rollingdisk.sweep.maps import MAP_OMEGA30, MAP_THETA0, map_sweep

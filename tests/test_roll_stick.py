@@ -48,6 +48,7 @@ def _y_P(h, theta):
     return math.sin(theta) - h * math.copysign(1.0, theta) * math.cos(theta)  # eq. (4)
 
 
+@pytest.mark.slow  # the sympy derivation of the stuck kernels: about 20 s
 def test_roll_stuck_kernels_equal_the_derivation(sym):
     rng = np.random.default_rng(41)
     for disk, y in random_states("smooth", N, seed=41):

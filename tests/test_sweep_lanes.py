@@ -325,6 +325,7 @@ def _agree(a, b):
     np.testing.assert_allclose(b[:, 2], a[:, 2], rtol=1e-9, atol=1e-15)  # max |dtheta|
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("ground", ["rough", "smooth"])
 def test_lanes_give_the_scalar_kernels_verdicts_and_frequencies(ground):
     args = _inputs(ground, 12)
