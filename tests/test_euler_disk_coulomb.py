@@ -81,3 +81,23 @@ def test_cli_friction_bad_choice(capsys):
     assert main(["euler-disk", "--friction", "glue"]) == 2
     err = capsys.readouterr().err
     assert "--friction" in err and len(err.strip().splitlines()) == 1
+
+
+@pytest.mark.slow
+def test_docs_mu_2_row_is_what_the_run_gives():
+    """docs/friction.md's table of the lower disk quotes the mu = 2 run: its end time and its
+    number of transitions are checked against a run here, so the page cannot go stale; the
+    energy balance (eq. 12) closes over its transitions."""
+    import re
+    from pathlib import Path
+
+    row = next(line for line in (Path(__file__).parents[1] / "docs" / "friction.md")
+               .read_text().splitlines() if line.startswith("| Coulomb, μ = 2 ("))
+    n_quoted, t_quoted = re.match(r"\| Coulomb, μ = 2 \((\d+) transitions\) \| ([\d.]+) \|",
+                                  row).groups()
+    r = run_euler_disk(EulerDisk(mu=2.0, friction="coulomb", **LOW), predict=False,
+                       max_steps=10**7, max_wall_time=600)
+    assert (r.status, r.end) == ("completed", "fell-flat")
+    assert f"{r.t_end:.6f}" == t_quoted
+    assert len(r.extra["transitions"]) == int(n_quoted)
+    assert r.energy_balance <= 1e-9

@@ -639,3 +639,8 @@ def integrate(rough, h, t0, y0, t_end, t_pause, rtol, atolv, max_step, first_ste
             seg_dt[:nseg], seg_y[:nseg], seg_F[:nseg])
 
 
+# What the scipy-path driver (rollingdisk.ivp.drivers) applies to scipy's steps, under public
+# names: the guard-sampling rule of this loop, its stage and the stage matrix it reads.
+needs_sampling = _needs_sampling
+MID_STAGE = _MID_STAGE
+STAGE_MATRIX = _A

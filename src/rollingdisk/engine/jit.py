@@ -79,7 +79,7 @@ _py_steps = 0
 _PKG = Path(__file__).resolve().parent
 
 
-def _folder() -> Path:
+def cache_folder() -> Path:
     env = os.environ.get("NUMBA_CACHE_DIR")
     if env:
         return Path(env)
@@ -104,7 +104,7 @@ def _key() -> str:
 
 def marker() -> Path:
     """The file whose presence says the on-disk compile cache is ready for these sources."""
-    return _folder() / f"rollingdisk-jit-{_key()}.ready"
+    return cache_folder() / f"rollingdisk-jit-{_key()}.ready"
 
 
 def ready() -> bool:
@@ -197,7 +197,7 @@ def auto_method(ground: str, rtol: float, atol: float, *, events: bool, dense_ou
 def _compile_here() -> int:
     """``python -m rollingdisk.engine.jit``: fill the cache up front, one compiler at a
     time (a second one leaves at once)."""
-    folder = _folder()
+    folder = cache_folder()
     folder.mkdir(parents=True, exist_ok=True)
     lock = open(folder / "rollingdisk-jit.lock", "a")  # noqa: SIM115 - held until exit
     try:

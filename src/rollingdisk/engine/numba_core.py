@@ -128,7 +128,7 @@ def rhs_matches_kernels() -> bool:
     the old formula).  This probe catches that.
     """
     rng = np.random.default_rng(12345)
-    for rough, n, kernel in ((True, 8, _eq._rough_rhs), (False, 10, _eq._smooth_rhs)):
+    for rough, n, kernel in ((True, 8, _eq.rough_rhs), (False, 10, _eq.smooth_rhs)):
         for h in (0.0, 0.37):
             for _ in range(3):
                 y = rng.uniform(-1.0, 1.0, n)
@@ -138,12 +138,12 @@ def rhs_matches_kernels() -> bool:
                 if not np.allclose(out, ref, rtol=1e-12, atol=1e-12):
                     return False
                 if not np.isclose(_normal_force(rough, h, y),  # noqa: F821
-                                  _eq._normal_force(rough, h, y), rtol=1e-12, atol=1e-12):
+                                  _eq.normal_force(rough, h, y), rtol=1e-12, atol=1e-12):
                     return False
                 x = y[:4].copy()
                 out4 = np.empty(4)
                 _rhs(rough, h, x, out4)  # noqa: F821
-                if not np.allclose(out4, np.array(_eq._reduced_rhs(rough, h, x)), rtol=1e-12,
+                if not np.allclose(out4, np.array(_eq.reduced_rhs(rough, h, x)), rtol=1e-12,
                                    atol=1e-12):
                     return False
     return True

@@ -144,7 +144,7 @@ class _Hybrid:
         self.wall0 = self.last_report = time.perf_counter()
         self.t = t0
         self.z = np.concatenate([y, np.zeros(4)])
-        self.run.sz = -1.0 if _cl._omega_z(y[5], y[8], y[9]) < 0.0 else 1.0
+        self.run.sz = -1.0 if _cl.omega_z(y[5], y[8], y[9]) < 0.0 else 1.0
         W = _inertial_omega_h(self.z)
         n = math.hypot(*W)
         if n > 0.0:
@@ -159,7 +159,7 @@ class _Hybrid:
         U = _inertial_slip(h, z)
         speed = math.hypot(z[2], z[3])
         if math.hypot(*U) <= self.o["slip_tol"] * (1.0 + speed):
-            z[2], z[3] = _cl._rolling_velocity(h, z)
+            z[2], z[3] = _cl.rolling_velocity(h, z)
             F_t, F_z, *_ = run.contact(ROLLING, z)
             if F_t > self.ground.mu_s * F_z:
                 self.transitions.append(Transition(self.t0, "rolling", "sliding"))
@@ -176,7 +176,7 @@ class _Hybrid:
         run, z = self.run, self.z
         if run.c_pivot == 0.0:
             return mode
-        wz = _cl._omega_z(z[5], z[8], z[9])
+        wz = _cl.omega_z(z[5], z[8], z[9])
         if abs(wz) > self.o["slip_tol"] * (1.0 + float(np.linalg.norm(z[7:10]))):
             run.sz = 1.0 if wz > 0.0 else -1.0
             return mode
@@ -220,7 +220,7 @@ class _Hybrid:
         if d is not None:
             run.rref = d
         elif n > 0.0:  # no consistent direction: along -M_h
-            run.rref = _cl._to_inertial(self.z[4], -Lx / n, -Ly / n)
+            run.rref = _cl.to_inertial(self.z[4], -Lx / n, -Ly / n)
         return base
 
     def integrate(self):
@@ -546,7 +546,7 @@ class _Hybrid:
             *_, Lx, Ly = run.contact(self.mode, z)
             n = math.hypot(Lx, Ly)
             if n > 0.0:
-                run.rref = _cl._to_inertial(z[4], -Lx / n, -Ly / n)
+                run.rref = _cl.to_inertial(z[4], -Lx / n, -Ly / n)
             new = self.mode & ~ROLL_STUCK
         else:
             W = _inertial_omega_h(z)
@@ -599,7 +599,7 @@ class _Hybrid:
         if self.mode & 1 == ROLLING:
             new = _start_sliding(run, disk, ground, z, stuck)
         else:
-            z[2], z[3] = _cl._rolling_velocity(self.h, z)  # u = 0 up to the event tolerance
+            z[2], z[3] = _cl.rolling_velocity(self.h, z)  # u = 0 up to the event tolerance
             F_t, F_z, *_ = run.contact(ROLLING | stuck, z)
             new = (ROLLING if F_t <= ground.mu_s * F_z
                    else _start_sliding(run, disk, ground, z, stuck))

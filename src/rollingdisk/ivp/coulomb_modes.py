@@ -83,7 +83,7 @@ class _Run:
         rx, ry = self.rref if rref is None else rref
         rs = bool(mode & ROLL_STUCK)
         if mode & 1 == ROLLING:
-            dy, F_x, F_y, F_z, P1, P2, P3, L, Lx, Ly = _cl._coulomb_rolling_full(
+            dy, F_x, F_y, F_z, P1, P2, P3, L, Lx, Ly = _cl.coulomb_rolling_full(
                 h, *cf, z, sz, rx, ry, w_eps, rs)
             return dy, F_x, F_y, F_z, 0.0, P1, P2, P3, L, Lx, Ly
         ref_X, ref_Y, u_eps = self.ref[0], self.ref[1], self.u_eps
@@ -91,7 +91,7 @@ class _Run:
             p = np.array([mode, self.g.mu_k, self.g.mu_s, *cf, ref_X, ref_Y, u_eps, sz, 0.0,
                           0.0, 0.0, 0.0, 0.0, self.u_qs])
             ref_X, ref_Y, u_eps = _quasi_static_ref()(p, h, z, sz)
-        return _cl._coulomb_sliding_full(h, self.g.mu_k, *cf, z, ref_X, ref_Y, u_eps, sz, rx,
+        return _cl.coulomb_sliding_full(h, self.g.mu_k, *cf, z, ref_X, ref_Y, u_eps, sz, rx,
                                          ry, w_eps, rs)
 
     def rhs(self, mode):
@@ -121,7 +121,7 @@ class _Run:
         if mode & PIVOT_STUCK:
             pivot = self.c_pivot * F_z - abs(L)
         else:
-            pivot = self.sz * _cl._omega_z(theta, z[8], z[9])
+            pivot = self.sz * _cl.omega_z(theta, z[8], z[9])
         if mode & ROLL_STUCK:
             roll = self.c_roll * F_z - math.hypot(Lx, Ly)
         else:
@@ -154,15 +154,15 @@ def _LSODA():
 
 
 def _inertial_slip(h, z):
-    u_x, u_y = _cl._slip_velocity(h, z)
-    return _cl._to_inertial(z[4], u_x, u_y)
+    u_x, u_y = _cl.slip_velocity(h, z)
+    return _cl.to_inertial(z[4], u_x, u_y)
 
 
 def _inertial_omega_h(z):
     """Horizontal angular velocity ``omega_h`` in OXYZ (``(omega_x, omega_y)`` of Cxyz
     turned by ``psi``)."""
     theta, w1, w2, w3 = z[5], z[7], z[8], z[9]
-    return _cl._to_inertial(z[4], w1, w2 * math.cos(theta) - w3 * math.sin(theta))
+    return _cl.to_inertial(z[4], w1, w2 * math.cos(theta) - w3 * math.sin(theta))
 
 
 
@@ -193,7 +193,7 @@ def _start_sliding(run, disk, ground, z, stuck=0):
         _, F_x, F_y, *_ = run.solve(ROLLING | stuck, z)
         n = math.hypot(F_x, F_y) or 1.0
         d = (-F_x / n, -F_y / n)
-    run.ref = _cl._to_inertial(z[4], d[0], d[1])
+    run.ref = _cl.to_inertial(z[4], d[0], d[1])
     run.armed = False  # the slip's end is looked for once |u| passes the floor (_arms)
     run.floor = run.u_eps = STICK_TOL * (1.0 + math.hypot(z[2], z[3]))
     return SLIDING
@@ -213,12 +213,12 @@ def _roll_turn(run, mode, z):
 
     def parts(a):
         ex, ey = math.cos(a), math.sin(a)  # Cxyz
-        dy = run.solve(mode, z, _cl._to_inertial(psi, ex, ey), math.inf)[0]
+        dy = run.solve(mode, z, _cl.to_inertial(psi, ex, ey), math.inf)[0]
         ax, ay = dy[7], dy[8] * c - dy[9] * s - w1 * wz
         return ex * ay - ey * ax, ex * ax + ey * ay
 
     a = _direction_scan(parts)
-    return None if a is None else _cl._to_inertial(psi, math.cos(a), math.sin(a))
+    return None if a is None else _cl.to_inertial(psi, math.cos(a), math.sin(a))
 
 
 def _active(run, mode, edge, guards):

@@ -224,17 +224,18 @@ class _LazyDense:
 
 
 def _needs_sampling(guards, solver, g_old, g_new):
-    """The rule of the compiled integrator (``_dop853._needs_sampling``) on a scipy step:
-    the guards at its start, at the stage state ``_MID_STAGE`` and at its end."""
+    """The rule of the compiled integrator (:func:`rollingdisk.engine.dop853.needs_sampling`)
+    on a scipy step: the guards at its start, at the stage state ``MID_STAGE`` and at its
+    end."""
     from rollingdisk.engine import dop853 as d
 
-    k = d._MID_STAGE
-    y_mid = solver.y_old + solver.h_previous * (d._A[k, :k] @ solver.K[:k])
+    k = d.MID_STAGE
+    y_mid = solver.y_old + solver.h_previous * (d.STAGE_MATRIX[k, :k] @ solver.K[:k])
     use = np.zeros(3, dtype=bool)
     a, m, b = np.ones(3), np.ones(3), np.ones(3)
     for g, va, vb in zip(guards, g_old, g_new):
         use[g.index], a[g.index], m[g.index], b[g.index] = True, va, g(0.0, y_mid), vb
-    return d._needs_sampling(a, m, b, use)
+    return d.needs_sampling(a, m, b, use)
 
 
 class _Counter:

@@ -584,7 +584,7 @@ def _marker():
     from rollingdisk.engine.compile import marker_key
 
     key = marker_key(rollingdisk.model, rollingdisk.engine, rollingdisk.ivp)
-    return _jit._folder() / f"rollingdisk-coulomb-{key}.ready"
+    return _jit.cache_folder() / f"rollingdisk-coulomb-{key}.ready"
 
 
 def cache_ready() -> bool:

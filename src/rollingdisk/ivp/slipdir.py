@@ -26,12 +26,12 @@ def _slip_accel(h, mu_k, coeffs, y, e_x, e_y, sz=None):
     theta, w1, w2, w3 = y[5], y[7], y[8], y[9]
     ht, s, c, p, y_P, z_P = _geo.contact_geometry(h, theta)
     if sz is None:
-        M = _cl._coulomb_moments(*coeffs, theta, w1, w2, w3)
-        d1, d2, d3, F_x, F_y, F_z = _cl._sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3,
+        M = _cl.coulomb_moments(*coeffs, theta, w1, w2, w3)
+        d1, d2, d3, F_x, F_y, F_z = _cl.sliding_solve(h, mu_k, e_x, e_y, theta, w1, w2, w3,
                                                        *M)
     else:
-        M = _cl._pivot_moments(*coeffs, theta, w1, w2, w3, sz)
-        solve = _cl._sliding_stuck_solve if sz == 0.0 else _cl._sliding_solve
+        M = _cl.pivot_moments(*coeffs, theta, w1, w2, w3, sz)
+        solve = _cl.sliding_stuck_solve if sz == 0.0 else _cl.sliding_solve
         d1, d2, d3, F_x, F_y, F_z = solve(h, mu_k, e_x, e_y, theta, w1, w2, w3, *M)[:6]
     Om = w3 / c
     v_Cx = w2 - ht * w3  # u = 0

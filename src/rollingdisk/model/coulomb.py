@@ -583,3 +583,20 @@ def rolling_state(disk: Disk, y_rough) -> np.ndarray:
     y = np.array([X_C, Y_C, 0.0, 0.0, psi, theta, phi, w1, w2, w3])
     y[2], y[3] = _rolling_velocity(disk.h, y)
     return y
+
+
+# The kernels the Coulomb driver, its compiled loop, the phases and the scenarios call, under
+# public names (plain float arithmetic, numba-compilable; the compiled loops bind them by the
+# names they are defined with, so both names stay).
+to_inertial = _to_inertial
+omega_z = _omega_z
+slip_velocity = _slip_velocity
+rolling_velocity = _rolling_velocity
+sliding_solve = _sliding_solve
+sliding_stuck_solve = _sliding_stuck_solve
+pivot_moments = _pivot_moments
+coulomb_moments = _coulomb_moments
+coulomb_sliding = _coulomb_sliding
+coulomb_rolling_full = _coulomb_rolling_full
+coulomb_sliding_full = _coulomb_sliding_full
+coulomb_energy_kernel = _coulomb_energy

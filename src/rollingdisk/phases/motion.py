@@ -523,10 +523,10 @@ class _Motion:
             d = slip_direction(self.disk, g, y)
             if d is None:
                 return c["F_z"]
-            ref = _cl._to_inertial(y[4], d[0], d[1])
+            ref = _cl.to_inertial(y[4], d[0], d[1])
         else:
-            ref = _cl._to_inertial(y[4], slip[0] / U, slip[1] / U)
-        return _cl._coulomb_sliding(h, g.mu_k, *g.coefficients, y, ref[0], ref[1])[3]
+            ref = _cl.to_inertial(y[4], slip[0] / U, slip[1] / U)
+        return _cl.coulomb_sliding(h, g.mu_k, *g.coefficients, y, ref[0], ref[1])[3]
 
     def _separates(self, s):
         """Whether the free disk leaves the plane within 1e-2 (its lowest point rises)."""

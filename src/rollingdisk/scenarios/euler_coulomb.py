@@ -81,7 +81,7 @@ class _CoulombToyRun:
     def forces(self, XT):
         """``(F_z, |u|)`` at the recorded points: the contact force of each point's mode."""
         tr = self.traj
-        u_x, u_y = _cl._slip_velocity(self.toy.h, tr.y)
+        u_x, u_y = _cl.slip_velocity(self.toy.h, tr.y)
         return tr.F_z, np.hypot(u_x, u_y)
 
     def extra(self) -> dict:

@@ -64,7 +64,7 @@ def _rhs(h, mu, u_s, c_roll, c_air, eps, x, c_bl=0.0):
     nh2 = wx * wx + wy * wy
     kr = -c_roll / np.sqrt(nh2 + eps * eps)
     # the sliding kernel with friction -mu F_z e, e = f u (not a unit vector: linear in mu e)
-    d1, d2, d3, F_x, F_y, F_z = _cl._sliding_solve(h, mu, f * u_x, f * u_y, theta, w1, w2, w3,
+    d1, d2, d3, F_x, F_y, F_z = _cl.sliding_solve(h, mu, f * u_x, f * u_y, theta, w1, w2, w3,
                                                    0.0 * ka, -ka * s, ka * c,
                                                    kr * wx, kr * wy, 0.0)
     Om = w3 / c  # eq. (2)
@@ -83,7 +83,7 @@ def _energy(h, x):
     Element-wise over the columns of ``x``."""
     z = 0.0 * x[0]
     y = (z, z, x[0], x[1], z, x[2], z, x[3], x[4], x[5])
-    return _cl._coulomb_energy(h, y)
+    return _cl.coulomb_energy_kernel(h, y)
 
 
 def _observables(h, x):
