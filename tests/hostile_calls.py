@@ -208,6 +208,8 @@ def calls() -> dict:
             "toss": ((disk, 1.5, 0.0, 1.0, 0.3), {"e": 0.5, "t_end": 0.5}),
             "toss_ensemble": ((disk, 2, 0), {"t_end": 0.5, "max_wall": 5.0,
                                              "results": "toss.jsonl"}),
+            "edge_odds": (((0.3,), 1, 0), {"e": 0.5, "mu": 0.5, "max_wall": 5.0,
+                                            "t_end": 0.5, "results": "edge-odds"}),
         },
         "rollingdisk.sweep": {
             "SweepGrid": (("rough",), {"h": (0.17,), "theta0": (0.3, 0.5),

@@ -121,6 +121,7 @@ _EXPORTS = {
     "simulate_to_rest": "rollingdisk.phases",
     "toss": "rollingdisk.scenarios.toss",
     "toss_ensemble": "rollingdisk.scenarios",
+    "edge_odds": "rollingdisk.scenarios",
     "slip_direction": "rollingdisk.ivp",
     "energy_balance": "rollingdisk.ivp",
     "DISSIPATION_TERMS": "rollingdisk.ivp",

@@ -1,5 +1,6 @@
-"""Applications built on the phases: the coin toss (:mod:`.toss`) and Euler's disk run to its
-end (:mod:`.euler_disk`).
+"""Applications built on the phases: the coin toss (:mod:`.toss`), the hand toss
+(:mod:`.hand_toss`), edge odds against thickness (:mod:`.odds`) and Euler's disk run to
+its end (:mod:`.euler_disk`).
 
 The function ``toss`` is ``rollingdisk.toss`` (or ``rollingdisk.scenarios.toss.toss``): a
 package attribute named like its submodule ``toss`` would be the module once the submodule
@@ -15,6 +16,8 @@ __getattr__, __dir__, __all__ = _attach(__name__, {
     "table_ensemble": "rollingdisk.scenarios.hand_toss",
     "CaughtResult": "rollingdisk.scenarios.hand_toss",
     "same_side_probability": "rollingdisk.scenarios.hand_toss",
+    "edge_odds": "rollingdisk.scenarios.odds",
+    "EdgeOdds": "rollingdisk.scenarios.odds",
     "AIR_VISCOSITY": "rollingdisk.scenarios.euler_disk",
     "END_KINDS": "rollingdisk.scenarios.euler_disk",
     "FIT_WINDOW": "rollingdisk.scenarios.euler_disk",
