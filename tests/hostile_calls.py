@@ -334,7 +334,7 @@ SKIPPED_KINDS = {
         "plot_energy_error", "plot_contact_forces", "plot_trajectory", "plot_euler_disk",
         "plot_nonlinear_map", "plot_basin_map", "plot_exact_theta", "plot_rosette",
         "plot_backbone", "plot_exact", "figure4", "figure5", "figure6", "figure7", "figure8",
-        "paper_figures", "draw_disk", "animate", "animation_html"),
+        "paper_figures", "draw_disk", "animate", "animation_html", "plot_edge_odds"),
 }
 SKIPPED = {name: why for why, names in SKIPPED_KINDS.items() for name in names}
 

@@ -123,3 +123,26 @@ def test_results_that_is_a_file_is_refused(tmp_path):
         edge_odds((0.3,), 1, results=f)
     with pytest.raises(TypeError, match="launch must be a HandLaunch"):
         edge_odds((0.3,), 1, launch="hand")
+
+
+def test_plot_draws_the_curve_the_no_bounce_lines_and_the_nickel(tmp_path):
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from rollingdisk.plotting import plot_edge_odds
+
+    counts = {"heads": np.array([60, 40]), "tails": np.array([40, 30]),
+              "edge": np.array([0, 30]), "undecided": np.array([0, 0])}
+    odds = EdgeOdds(np.array([0.05, 0.5]), counts, 100, 1, 0.5, 0.5)
+    out = plot_edge_odds(odds)
+    ax = out["ax"]
+    assert ax.get_yscale() == "log"
+    x, y = out["lines"]["no-bounce sphere"].get_data()
+    assert np.allclose(y, no_bounce_edge_sphere(x), rtol=1e-15)
+    # the edge frequency 0 at t/d = 0.05 is drawn at its interval's upper bound
+    hi = odds.interval("edge")[1][0]
+    assert any(np.allclose(line.get_ydata(), [hi]) for line in ax.get_lines())
+    out["fig"].savefig(tmp_path / "edge.png")
+    with pytest.raises(TypeError, match="odds must be"):
+        plot_edge_odds({"edge": 1})

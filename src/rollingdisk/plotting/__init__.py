@@ -31,6 +31,7 @@ __getattr__, __dir__, __all__ = _attach(__name__, {
     "plot_rosette": "rollingdisk.plotting.plots",
     "plot_backbone": "rollingdisk.plotting.plots",
     "plot_exact": "rollingdisk.plotting.plots",
+    "plot_edge_odds": "rollingdisk.plotting.odds_plot",
     "FIGURE_HS": "rollingdisk.plotting.figures",
     "SCALE_MAX": "rollingdisk.plotting.figures",
     "figure4": "rollingdisk.plotting.figures",
