@@ -44,6 +44,7 @@ HEAVY = {
     "figures": ["figures", "--scale", "0.5", "--out", "{tmp}/fig"],
     "euler-disk": ["euler-disk", "--alpha0", "0.3", "--json"],
     "toss": ["toss", "--h", "0.1", "--n", "2", "--json"],
+    "edge-odds": ["edge-odds", "--n", "1", "--ratios", "0.3", "--upward-speed", "3", "--json"],
     "animate": ["animate", "--theta0", "30deg", "--Omega0", "2", "--frames", "4",
                 "--out", "{tmp}/a.gif"],
     "explore": ["explore", "--h", "0.17", "--no-browser", "--port", "0"],

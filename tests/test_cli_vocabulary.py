@@ -33,11 +33,13 @@ SYNONYMS = (
 )
 
 #: Commands that run long enough to draw progress: each takes --quiet (and --progress).
-LONG = {"simulate", "sweep", "toss", "atlas", "euler-disk", "figures", "map", "derive"}
+LONG = {"simulate", "sweep", "toss", "atlas", "euler-disk", "figures", "map", "derive",
+        "edge-odds"}
 #: The options that give the disk, the same wherever a disk is taken.
 DISK_FLAGS = {"--h", "--disk", "--radius", "--diameter", "--thickness", "--mass", "--gravity"}
-#: Commands that take no disk.
-NO_DISK = {"figures", "derive"}
+#: Commands that take no disk (edge-odds varies the thickness itself, in units of the
+#: radius).
+NO_DISK = {"figures", "derive", "edge-odds"}
 
 
 def _commands() -> dict[str, argparse.ArgumentParser]:

@@ -4,6 +4,7 @@ curve's counts against the ensembles it is made of, its resume, its CF-attribute
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -146,3 +147,25 @@ def test_plot_draws_the_curve_the_no_bounce_lines_and_the_nickel(tmp_path):
     out["fig"].savefig(tmp_path / "edge.png")
     with pytest.raises(TypeError, match="odds must be"):
         plot_edge_odds({"edge": 1})
+
+
+def test_cli_prints_the_curve_writes_its_file_and_refuses_bad_input(tmp_path, capsys):
+    from rollingdisk.cli import main
+
+    out, plot = tmp_path / "e.nc", tmp_path / "e.png"
+    argv = ["edge-odds", "--n", "2", "--ratios", "0.1,0.5", "--upward-speed", "3",
+            "--flip-rate", "4", "--seed", "3", "--quiet"]
+    assert main([*argv, "--out", str(out), "--plot", str(plot)]) == 0
+    text = capsys.readouterr().out
+    assert text.splitlines()[0].split() == ["t/d", "heads", "tails", "edge", "undecided"]
+    assert "model: hand toss" in text and "e = 0.5, mu = 0.5" in text
+    assert out.stat().st_size > 0 and plot.read_bytes()[:4] == b"\x89PNG"
+    assert main([*argv, "--json"]) == 0
+    got = json.loads(capsys.readouterr().out)
+    want = edge_odds((0.1, 0.5), 2, 3, launch=HandLaunch(upward_speed=3.0, flip_rate=4.0))
+    assert got["counts"] == {k: v.tolist() for k, v in want.counts.items()}
+    for bad in (["--ratios", "0,0.5"], ["--ratios", "x"], ["--n", "0"], ["--height", "0.2"],
+                ["--restitution", "2"]):
+        assert main(["edge-odds", "--n", "1", *bad]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and err[0].startswith("rollingdisk edge-odds: error:"), err

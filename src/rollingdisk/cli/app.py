@@ -70,6 +70,8 @@ COMMANDS = (
      "check every printed equation of the paper against the derivation"),
     ("toss", "rollingdisk.cli.toss", "toss a disk many times: heads, tails or edge, with "
      "flight, impacts, rolling and sliding to the end"),
+    ("edge-odds", "rollingdisk.cli.edge_odds", "heads, tails and edge of hand tosses on a "
+     "table against the coin's thickness t/d"),
     ("explore", "rollingdisk.explore.command",
      "interactive explorer in the web browser: maps, steady motions, 3D"),
 )
