@@ -38,6 +38,7 @@ lift-off (as the sharp disk's :func:`~rollingdisk.model.events.LiftOff`).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from dataclasses import dataclass
@@ -63,7 +64,8 @@ from rollingdisk.util.checks import check_real, check_span
 from rollingdisk.util.errors import ParameterError, ParameterTypeError
 
 __all__ = ["ROUNDED_ROUGH", "ROUNDED_SMOOTH", "RoundedTrajectory", "rounded_model",
-           "rounded_parameters", "simulate_rounded"]
+           "rounded_parameters", "simulate_rounded", "simulate_rounded_steady",
+           "rounded_initial_state", "simulate_options", "rounded_frequency"]
 
 # the state components, by name (model.state's layouts)
 R_X, R_Y, R_PSI, R_THETA, R_PHI, R_W1, R_W2, R_W3 = range(8)
@@ -157,10 +159,11 @@ def rough_energy(t, y, p):
 
 
 def smooth_energy(t, y, p):
-    """Energy [``m g a``] on smooth ground, less the constant kinetic energy of C's
-    horizontal motion (:func:`~rollingdisk.model.rim.rounded_energy`)."""
+    """Energy [``m g a``] on smooth ground: :func:`~rollingdisk.model.rim.rounded_energy`
+    and the (constant) kinetic energy of C's horizontal motion."""
     return float(rounded_energy(False, p[P_H], p[P_RHO], p[P_K1], p[P_K2], y[S_THETA],
-                                y[S_W1], y[S_W2], y[S_W3]))
+                                y[S_W1], y[S_W2], y[S_W3])
+                 + 0.5 * (y[S_VX] * y[S_VX] + y[S_VY] * y[S_VY]))
 
 
 _EVENTS = ("tread-contact", "lift-off", "fell-flat")
@@ -239,9 +242,13 @@ class RoundedTrajectory(Trajectory):
 
     @cached_property
     def E(self) -> np.ndarray:
-        """Mechanical energy [``m g a``] (:func:`~rollingdisk.model.rim.rounded_energy`;
-        on smooth ground without the constant kinetic energy of C's horizontal motion)."""
-        return np.asarray(rounded_energy(*self._kernel_args(), *self._reduced()))
+        """Mechanical energy [``m g a``] (eq. 13 with the rounded contact,
+        :func:`~rollingdisk.model.rim.rounded_energy`; on smooth ground with the constant
+        kinetic energy of C's horizontal motion, as the sharp disk's)."""
+        E = rounded_energy(*self._kernel_args(), *self._reduced())
+        if self.ground != "rough":
+            E = E + 0.5 * (self.y[S_VX] ** 2 + self.y[S_VY] ** 2)
+        return np.asarray(E)
 
 
 # ------------------------------------------------------------------ simulate
@@ -339,3 +346,93 @@ def simulate_rounded(disk: Disk, ground: str, t_span, y0, *, rtol: float = 1e-11
     return RoundedTrajectory(disk=disk, ground=ground, t=sol.t, y=sol.y.T, status=status,
                              message=message, n_steps=sol.n_steps, n_rhs=sol.n_rhs,
                              method="dop853", t_event=t_event, wall_time=wall)
+
+
+def simulate_options(disk: Disk, ground: str, t_span, y0, *, method, rtol, atol, max_step,
+                     first_step, t_eval, dense_output, events, guards, max_steps,
+                     error_control, progress, sink) -> RoundedTrajectory:
+    """:func:`rollingdisk.simulate` for a disk with a rounded rim: the options the engine's
+    DOP853 honours are passed to :func:`simulate_rounded`; any other option set raises
+    :class:`~rollingdisk.util.errors.ParameterError` naming it."""
+    unused = {"method": method not in ("auto", "dop853"), "first_step": first_step is not None,
+              "t_eval": t_eval is not None, "dense_output": bool(dense_output),
+              "events": events is not None, "guards": not guards,
+              "error_control": error_control != "full", "progress": progress is not None,
+              "sink": sink is not None}
+    bad = [name for name, set_ in unused.items() if set_]
+    if bad:
+        raise ParameterError(
+            f"a disk with a rounded rim (rim_radius = {disk.rim_radius:g}) runs on the "
+            f"engine's DOP853 (rollingdisk.ivp.rounded.simulate_rounded), which takes "
+            f"rtol, atol, max_step and max_steps; not: {', '.join(bad)}")
+    return simulate_rounded(disk, ground, t_span, y0, rtol=rtol, atol=atol,
+                            max_step=max_step, max_steps=max_steps)
+
+
+def rounded_initial_state(motion, psi0: float = 0.0, phi0: float = 0.0) -> np.ndarray:
+    """The full state of a :class:`~rollingdisk.theory.rounded.RoundedSteadyMotion`: C at
+    the origin, ``omega1 = 0``; on smooth ground C at rest horizontally (``r_C = 0``)."""
+    theta, w1, w2, w3 = motion.initial_state()
+    if motion.ground == "rough":
+        return np.array([0.0, 0.0, psi0, theta, phi0, w1, w2, w3])
+    return np.array([0.0, 0.0, 0.0, 0.0, psi0, theta, phi0, w1, w2, w3])
+
+
+def simulate_rounded_steady(motion, t_end: float, *, perturb: float = 0.0, kick: float = 0.0,
+                            **options) -> RoundedTrajectory:
+    """Simulate the rounded disk from a steady motion of :mod:`rollingdisk.theory.rounded`
+    with ``theta(0)`` [rad] perturbed by ``perturb`` and ``omega1(0)`` [``sqrt(g/a)``] by
+    ``kick`` (as :func:`rollingdisk.simulate_steady`); ``options`` go to
+    :func:`simulate_rounded`.  The trajectory's ``theta_ref`` is ``motion.theta0``."""
+    from rollingdisk.theory.rounded import RoundedSteadyMotion
+
+    if not isinstance(motion, RoundedSteadyMotion):
+        raise ParameterTypeError(f"motion must be a RoundedSteadyMotion, got "
+                                 f"{type(motion).__name__}")
+    t_end = check_real("t_end", t_end, low=0.0, low_open=True)
+    y0 = rounded_initial_state(motion)
+    i = ROUGH_STATE.index("theta") if motion.ground == "rough" else SMOOTH_STATE.index("theta")
+    y0[i] += check_real("perturb", perturb)
+    y0[i + 2] += check_real("kick", kick)
+    tr = simulate_rounded(motion.disk, motion.ground, (0.0, t_end), y0, **options)
+    return dataclasses.replace(tr, theta_ref=float(motion.theta0))
+
+
+def rounded_frequency(traj: Trajectory, *, min_periods: int = 2) -> float | None:
+    """Angular frequency [``sqrt(g/a)``] of the oscillation of ``theta`` along ``traj``, or
+    None with fewer than ``min_periods`` whole periods.
+
+    The upward crossings of ``theta - c`` (``c`` the time average of ``theta``) are found
+    on the cubic Hermite interpolant of ``theta`` and ``d theta/dt = omega1`` between
+    stored points (Newton's method from the secant root); the period is the
+    least-squares slope of the crossing times against their index.  Store points densely
+    (``max_step`` a small fraction of the period): the interpolant's error is
+    ``O(dt^4)``.  Compare with ``sqrt(varpi2)`` of
+    :func:`rollingdisk.theory.rounded.rounded_varpi2`.
+    """
+    t, th, w1 = traj.t, traj.theta, traj.omega1
+    if t.size < 3:
+        return None
+    c = float(np.trapezoid(th, t) / (t[-1] - t[0]))
+    v = th - c
+    up = np.nonzero((v[:-1] < 0) & (v[1:] >= 0))[0]
+    if up.size < min_periods + 1:
+        return None
+    tc = np.empty(up.size)
+    for j, i in enumerate(up):
+        dt = t[i + 1] - t[i]
+        a, b, da, db = v[i], v[i + 1], w1[i] * dt, w1[i + 1] * dt
+        x = a / (a - b)
+        for _ in range(30):
+            h00, h10 = 2 * x**3 - 3 * x**2 + 1, x**3 - 2 * x**2 + x
+            h01, h11 = -2 * x**3 + 3 * x**2, x**3 - x**2
+            f = h00 * a + h10 * da + h01 * b + h11 * db
+            df = ((6 * x**2 - 6 * x) * a + (3 * x**2 - 4 * x + 1) * da
+                  + (-6 * x**2 + 6 * x) * b + (3 * x**2 - 2 * x) * db)
+            step = f / df
+            x = min(max(x - step, 0.0), 1.0)
+            if abs(step) < 1e-15:
+                break
+        tc[j] = t[i] + x * dt
+    period = np.polyfit(np.arange(tc.size, dtype=float), tc, 1)[0]
+    return float(2 * math.pi / period)
