@@ -186,3 +186,8 @@ def test_compiled_and_uncompiled_take_the_same_steps():
     d = _crossing_run(60.0, compiled=True)
     assert (c.n_steps, c.n_rhs) == (d.n_steps, d.n_rhs)
     np.testing.assert_allclose(d.y, c.y, rtol=1e-13, atol=1e-14)
+    y0 = [0.1, -0.2, 0.05, -0.03, 0.3, 0.6, 0.0, 0.2, 1.3, 0.8]
+    e = simulate_rounded(disk, "smooth", (0.0, 20.0), y0, compiled=False)
+    f = simulate_rounded(disk, "smooth", (0.0, 20.0), y0, compiled=True)
+    assert (e.n_steps, e.n_rhs, e.status) == (f.n_steps, f.n_rhs, f.status)
+    np.testing.assert_allclose(f.y, e.y, rtol=1e-13, atol=1e-14)

@@ -77,6 +77,19 @@ def test_simulate_a_kicked_circle_measures_varpi(capsys, tmp_path):
     assert np.ptp(cols["E"]) < 1e-10 and np.all(cols["F_z"] > 0)
 
 
+def test_simulate_a_physical_disk_in_si(capsys, tmp_path):
+    out_csv = tmp_path / "coin.csv"
+    rc, out, _ = _run(capsys, "simulate", "--disk", "euro-1", "--rim-radius", "0.3mm",
+                      "--theta0", "30deg", "--Omega0", "30rad/s", "--kick", "0.3rad/s",
+                      "--t-end", "0.5s", "--out", str(out_csv), "--json")
+    d = json.loads(out)
+    assert rc == 0 and d["status"] == "completed"
+    assert d["rim_radius_si"] == pytest.approx(3e-4, rel=1e-12)
+    assert d["t_end_si"] == pytest.approx(0.5, rel=1e-12)
+    lines = out_csv.read_text().splitlines()
+    assert lines[1].startswith("# t [s],X_C [m]") and "F_z [N]" in lines[1]
+
+
 def test_simulate_a_state_across_theta_zero(capsys):
     """rho = h: --state may start at theta = 0 and the disk rocks through it."""
     rc, out, _ = _run(capsys, "simulate", "--h", "0.2", "--rim-radius", "0.2", "--state",
