@@ -191,3 +191,26 @@ def test_compiled_and_uncompiled_take_the_same_steps():
     f = simulate_rounded(disk, "smooth", (0.0, 20.0), y0, compiled=True)
     assert (e.n_steps, e.n_rhs, e.status) == (f.n_steps, f.n_rhs, f.status)
     np.testing.assert_allclose(f.y, e.y, rtol=1e-13, atol=1e-14)
+
+
+@pytest.mark.parametrize("theta", [-0.1, -0.0, 0.0, 0.1])
+@pytest.mark.parametrize("side", [-1.0, 1.0])
+def test_the_lift_off_guard_keeps_the_starting_side(theta, side):
+    """The lift-off function is F_z with hp = (h - rho) side on both sides of theta = 0
+    (the jump of hp at the tread is no lift-off): the rim_contact it evaluates has that
+    hp; and it is symmetric under theta -> -theta (omega1, omega3 and the side mirrored)."""
+    from rollingdisk.ivp.rounded import _side_h
+    from rollingdisk.model.rim import rim_contact
+
+    h, rho = 0.2, 0.1
+    assert rim_contact(_side_h(h, rho, side, theta), rho, theta)[0] == (h - rho) * side
+    disk = rd.Disk(h, rim_radius=rho)
+    p = rounded_parameters(disk, side)
+    g = np.empty(3)
+    y = np.array([0, 0, 0, 0.3 * side, 0, 0.2, 1.1, 0.7])
+    ROUNDED_ROUGH.events(0.0, y, p, g)
+    f_start = g[1]
+    y_other = y * np.array([1, 1, 1, -1, 1, -1, 1, -1])  # theta, omega1, omega3 mirrored
+    p_other = rounded_parameters(disk, -side)
+    ROUNDED_ROUGH.events(0.0, y_other, p_other, g)
+    assert g[1] == pytest.approx(f_start, rel=1e-14)  # the mirror symmetry theta -> -theta

@@ -1,6 +1,7 @@
 """The disk's initial-value problems on each ground: :func:`simulate` on rough and smooth
 ground (the paper's equations, stopped at the guards) and :func:`simulate_coulomb` on
-Coulomb ground (rolling and sliding, transitions located), with their drivers.
+Coulomb ground (rolling and sliding, transitions located), with their drivers; the disk
+with a rounded rim by :func:`simulate_rounded` (a model of the engine's contract).
 """
 
 from rollingdisk.util.lazy import attach as _attach

@@ -80,8 +80,9 @@ _HALF_PI = 0.5 * math.pi
 # ------------------------------------------------------------------ the model's functions
 def _side_h(h, rho, side, theta):
     """The half-thickness that gives ``hp = (h - rho) side`` at ``theta`` (the kernels use
-    ``h`` only through ``hp``): ``h`` on the starting side, ``2 rho - h`` past 0."""
-    if theta * side < 0.0:
+    ``h`` only through ``hp``): ``h`` on the starting side, ``2 rho - h`` past 0 (and at
+    ``theta = 0`` coming from below, which the kernels count as ``0+``)."""
+    if theta * side < 0.0 or (theta == 0.0 and side < 0.0):
         return 2.0 * rho - h
     return h
 
