@@ -214,3 +214,23 @@ def test_the_lift_off_guard_keeps_the_starting_side(theta, side):
     p_other = rounded_parameters(disk, -side)
     ROUNDED_ROUGH.events(0.0, y_other, p_other, g)
     assert g[1] == pytest.approx(f_start, rel=1e-14)  # the mirror symmetry theta -> -theta
+
+
+def test_a_sphere_rolls_as_a_sphere():
+    """h = rho = 1 is a homogeneous sphere: no moment about C, so its angular velocity is
+    constant in the inertial frame, C moves in a straight line at constant speed on rough
+    ground (the friction force vanishes), and rough and smooth ground give the same
+    rotation (theta, omega1..3 at the end agree)."""
+    sphere = rd.Disk(1.0, rim_radius=1.0)
+    w = [0.2, 2.0, 0.3]
+    rough = simulate_rounded(sphere, "rough", (0.0, 30.0), [0, 0, 0, 0.1, 0, *w], rtol=1e-12,
+                             atol=1e-13, compiled=False)
+    smooth = simulate_rounded(sphere, "smooth", (0.0, 30.0), [0, 0, 0, 0, 0, 0.1, 0, *w],
+                              rtol=1e-12, atol=1e-13, compiled=False)
+    assert rough.status == smooth.status == "completed"
+    assert np.ptp(rough.theta) > 0.3  # the axis wobbles: a real test of the rotation
+    for X in (rough.X_C, rough.Y_C):
+        line = np.polyfit(rough.t, X, 1)
+        assert np.max(np.abs(np.polyval(line, rough.t) - X)) <= 1e-9
+    assert np.max(np.abs(np.hypot(rough.F_x, rough.F_y))) <= 1e-9
+    np.testing.assert_allclose(rough.y[3:, -1], smooth.y[5:, -1], rtol=0, atol=1e-9)
