@@ -191,6 +191,9 @@ def test_compiled_and_uncompiled_take_the_same_steps():
     f = simulate_rounded(disk, "smooth", (0.0, 20.0), y0, compiled=True)
     assert (e.n_steps, e.n_rhs, e.status) == (f.n_steps, f.n_rhs, f.status)
     np.testing.assert_allclose(f.y, e.y, rtol=1e-13, atol=1e-14)
+    from rollingdisk.engine import steploop_numba
+
+    assert len(steploop_numba.loop().signatures) == 1  # the one loop of every model
 
 
 @pytest.mark.parametrize("theta", [-0.1, -0.0, 0.0, 0.1])
