@@ -206,6 +206,10 @@ class RoundedTrajectory(Trajectory):
     layouts; the contact point, contact force and energy are those of the rounded rim
     (:mod:`rollingdisk.model.rim`)."""
 
+    def __repr__(self) -> str:
+        return super().__repr__().replace(", t=", f", rim_radius={self.disk.rim_radius:g}, t=",
+                                          1)
+
     def _reduced(self):
         i = 3 if self.ground == "rough" else 5
         return self.y[i], self.y[i + 2], self.y[i + 3], self.y[i + 4]
