@@ -7,6 +7,7 @@ motion or any state, on rough, smooth or Coulomb ground.
     $ rollingdisk simulate --ground coulomb --mu 0.3 --h 0.1 --theta0 0.3 --Omega0 2 \\
           --t-end 20
     $ rollingdisk simulate --disk euro-1 --theta0 30deg --Omega0 30rad/s --t-end 2s --out c.csv
+    $ rollingdisk simulate --h 0.2 --rim-radius 0.1 --theta0 0.4 --Omega0 2 --kick 0.01
 """
 
 from __future__ import annotations
@@ -44,13 +45,15 @@ from rollingdisk.cli._format import (
     progress_bar,
     with_si,
 )
+from rollingdisk.cli._rounded import add_rim_radius, run_simulate
 
 #: The kind of quantity of each field of the summary (keys of rollingdisk.model.units.KINDS).
 KINDS = {"h": "dimensionless", "t_end": "time", "energy_drift": "dimensionless",
          "theta_min": "angle", "theta_max": "angle", "theta_frequency": "angular_speed",
          "varpi": "angular_speed", "varpi2": "rate_sq", "growth_rate": "rate",
          "energy_balance": "dimensionless", "mu_s": "dimensionless",
-         "mu_k": "dimensionless", "rolling_resistance": "length", "pivot": "length"}
+         "mu_k": "dimensionless", "rolling_resistance": "length", "pivot": "length",
+         "rim_radius": "length"}
 
 
 def configure(sub):
@@ -99,6 +102,7 @@ def configure(sub):
     c.add_argument("--restitution", type=real("restitution", low=0.0, high=1.0), default=None,
                    help="coefficient of restitution of the impacts, in [0, 1] (default 0.5); "
                    "only with --until-rest")
+    add_rim_radius(p)
     add_perturbation_args(p)
     t_end_arg(p, high=SIMULATE_T_END_MAX)
     add_tolerance_args(p)
@@ -146,12 +150,17 @@ def run(args) -> int:
     from rollingdisk.util.files import check_writable
 
     disk = disk_from_args(args)
-    coulomb = coulomb_ground(args, disk)
-    motion = start_from_args(args, "simulate")
+    rounded = args.rim_radius is not None  # the rounded rim: ivp/rounded.py
+    coulomb = None if rounded else coulomb_ground(args, disk)
+    motion = None if rounded else start_from_args(args, "simulate")
     if args.out is not None:
         check_writable(args.out, name="--out")
     with numeric_warnings() as caught:  # said in the result, not printed
-        if coulomb is not None and args.until_rest:
+        if rounded:
+            record, transitions = run_simulate(args, disk), []
+            keys = ("t_end", "n_steps", "rim_radius", "energy_drift", "theta_min",
+                    "theta_max", "theta_frequency", "varpi", "wall_time_s")
+        elif coulomb is not None and args.until_rest:
             record, transitions = run_until_rest(args, disk, coulomb, motion)
             keys = ("t_end", "n_impacts", "energy_balance", "impact_loss",
                     "dissipated_total", "wall_time_s")

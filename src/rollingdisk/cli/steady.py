@@ -6,6 +6,7 @@
     $ rollingdisk steady --h 0.1 --motion straight --omega0 2
     $ rollingdisk steady --disk euro-1 --theta0 30deg --Omega0 60rad/s   # SI beside
     $ rollingdisk steady --disk euro-1 --motion straight --omega0 0.3m/s
+    $ rollingdisk steady --h 0.2 --rim-radius 0.1 --theta0 0.4 --Omega0 2
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ import math
 
 from rollingdisk.cli._args import add_motion_args, disk_from_args, motion_from_args
 from rollingdisk.cli._format import disk_fields, disk_line, has_scale, si_text, with_si
+from rollingdisk.cli._rounded import add_rim_radius, run_steady
 
 LABELS = [
     ("ground", "ground"), ("h", "half-thickness / radius"), ("motion", "kind of motion"),
@@ -36,6 +38,7 @@ def configure(sub):
         "--Omega0, --rC, --rP for a circle, or --motion straight --omega0 W. Angles in "
         "radians or with a deg suffix; write negative angles as --theta0=-30deg.")
     add_motion_args(p)
+    add_rim_radius(p)
     p.add_argument("--json", action="store_true", help="print one JSON object")
     return p
 
@@ -44,6 +47,8 @@ def run(args) -> int:
     import rollingdisk as rd
 
     disk = disk_from_args(args)
+    if args.rim_radius is not None:  # the rounded rim: theory/rounded.py
+        return run_steady(args, disk)
     motion = motion_from_args(args, "steady")
     stab = rd.stability(motion)
     rec = {**motion.as_dict(), "theta0_deg": math.degrees(motion.theta0), **stab.as_dict()}

@@ -1,6 +1,7 @@
 """The disk's initial-value problems on each ground: :func:`simulate` on rough and smooth
 ground (the paper's equations, stopped at the guards) and :func:`simulate_coulomb` on
-Coulomb ground (rolling and sliding, transitions located), with their drivers.
+Coulomb ground (rolling and sliding, transitions located), with their drivers; the disk
+with a rounded rim by :func:`simulate_rounded` (a model of the engine's contract).
 """
 
 from rollingdisk.util.lazy import attach as _attach
@@ -13,6 +14,9 @@ __getattr__, __dir__, __all__ = _attach(__name__, {
     "simulate": "rollingdisk.ivp.simulation",
     "simulate_steady": "rollingdisk.ivp.simulation",
     "simulate_coulomb": "rollingdisk.ivp.hybrid",
+    "simulate_rounded": "rollingdisk.ivp.rounded",
+    "simulate_rounded_steady": "rollingdisk.ivp.rounded",
+    "RoundedTrajectory": "rollingdisk.ivp.rounded",
     "energy_balance": "rollingdisk.ivp.hybrid",
     "DISSIPATION_TERMS": "rollingdisk.ivp.hybrid",
     "slip_direction": "rollingdisk.ivp.hybrid",

@@ -199,7 +199,11 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
     Parameters
     ----------
     disk : Disk
-        The disk (only ``disk.h`` enters; the trajectory keeps the disk given).
+        The disk (only ``disk.h`` enters; the trajectory keeps the disk given).  A disk
+        with a rounded rim (``rim_radius > 0``) is run by
+        :func:`rollingdisk.ivp.rounded.simulate_rounded` (the engine's DOP853; ``rtol``,
+        ``atol``, ``max_step``, ``max_steps`` only) and returns its
+        :class:`~rollingdisk.ivp.rounded.RoundedTrajectory`.
     ground : {"rough", "smooth"}
         Rolling without slip, or sliding without friction.
     t_span : (t0, t1)
@@ -285,6 +289,14 @@ def simulate(disk: Disk, ground: str, t_span: Sequence[float], y0, *, method: st
     >>> tr.status, bool(energy_drift(tr) < 1e-9)
     ('completed', True)
     """
+    if isinstance(disk, Disk) and disk.rim_radius != 0.0:  # a rounded rim: ivp/rounded.py
+        from rollingdisk.ivp.rounded import simulate_options
+
+        return simulate_options(disk, ground, t_span, y0, method=method, rtol=rtol,
+                                atol=atol, max_step=max_step, first_step=first_step,
+                                t_eval=t_eval, dense_output=dense_output, events=events,
+                                guards=guards, max_steps=max_steps,
+                                error_control=error_control, progress=progress, sink=sink)
     check_disk(disk)
     ground = check_ground(ground)
     y = _check_state(disk, ground, y0)

@@ -36,7 +36,7 @@ from rollingdisk.model.geometry import inertia
 
 __all__ = ["rim_inertia", "rim_contact", "contact_part", "centre_height",
            "rounded_omega_dot", "rounded_normal_force", "rounded_energy",
-           "rounded_reduced_rhs"]
+           "rounded_reduced_rhs", "rounded_rough_omega_dot"]
 
 _PI = math.pi
 
@@ -164,18 +164,21 @@ def rounded_omega_dot(rough, h, rho, k1, k2, theta, w1, w2, w3):
     # the gyroscopic moment about xi and the weight's moment (eq. 9_1 with F_z = 1)
     gyro = (k2 * w2 - k1 * w3 * p) * w3
     if rough:
-        return _rough(rho, k1, k2, s, c, p, A, H, y_P, z_P, gyro, w1, w2, w3)
+        return rounded_rough_omega_dot(rho, k1, k2, s, c, p, A, H, y_P, z_P, gyro, w1, w2,
+                                       w3)
     d1 = (gyro + y_P + y_P * (z_P + rho) * w1 * w1) / (k1 + y_P * y_P)
     d2 = 0.0 * w1
     d3 = (-k2 * w2 + k1 * w3 * p) * w1 / k1
     return d1, d2, d3
 
 
-def _rough(rho, k1, k2, s, c, p, A, H, y_P, z_P, gyro, w1, w2, w3):
+def rounded_rough_omega_dot(rho, k1, k2, s, c, p, A, H, y_P, z_P, gyro, w1, w2, w3):
     """The rough-ground kernel of :func:`rounded_omega_dot`: with ``A' = -rho sin``,
     ``H' = rho cos`` the derivation's ``omega1^2`` terms collapse to ``rho y_P omega1^2``,
     and its denominators to ``k1 + A^2 + H^2`` (the moment of inertia about the contact
-    line, over m) and ``D = k1 k2 + k1 A^2 + k2 H^2``."""
+    line, over m) and ``D = k1 k2 + k1 A^2 + k2 H^2``.  Public because compiled code that
+    calls :func:`rounded_omega_dot` must compile it too (:mod:`rollingdisk.ivp.rounded`
+    lists it among its model's helpers)."""
     d1 = ((A * A + A * H * p) * w2 * w3 - (A * H + H * H * p) * w3 * w3 + gyro
           + y_P * (1.0 + rho * w1 * w1)) / (k1 + A * A + H * H)
     D = k1 * k2 + k1 * A * A + k2 * H * H
