@@ -121,7 +121,7 @@ def test_out_onto_a_fifo_writes_through(tmp_path, capsys):
     reader = threading.Thread(target=lambda: got.append(fifo.read_text()))
     reader.start()
     rc = main(["simulate", *STEADY, "--t-end", "1", "--out", str(fifo), "--json"])
-    reader.join(timeout=30)
+    reader.join(timeout=600)
     assert rc == 0 and stat.S_ISFIFO(os.stat(fifo).st_mode)
     assert got and got[0].startswith("t,X_C,Y_C") and len(got[0].splitlines()) > 2
     assert sorted(os.listdir(tmp_path)) == ["pipe"]  # no temporary left

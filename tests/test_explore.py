@@ -45,10 +45,15 @@ def base_url():
     srv.server_close()
 
 
+#: Seconds a request may take before the test calls the server hung: a guard against a hang,
+#: not a measure of speed (a request may have to wait for a cold compile on a loaded machine).
+HANG = 600
+
+
 def get(base_url, path, params=None, *, raw_query=None):
     query = raw_query if raw_query is not None else urllib.parse.urlencode(params or {})
     try:
-        with urllib.request.urlopen(f"{base_url}{path}?{query}", timeout=30) as res:
+        with urllib.request.urlopen(f"{base_url}{path}?{query}", timeout=HANG) as res:
             return res.status, json.loads(res.read())
     except urllib.error.HTTPError as err:
         return err.code, json.loads(err.read())
@@ -291,7 +296,7 @@ def test_concurrent_requests(base_url):
 def test_static_files_are_local(base_url):
     for path, kind in (("/", "text/html"), ("/explore.js", "javascript"),
                        ("/view.js", "javascript"), ("/explore.css", "text/css")):
-        with urllib.request.urlopen(base_url + path, timeout=10) as res:
+        with urllib.request.urlopen(base_url + path, timeout=HANG) as res:
             assert res.status == 200 and kind in res.headers["Content-Type"]
             text = res.read().decode()
         # nothing fetched from the network: no absolute URL anywhere in the page's files
@@ -353,7 +358,7 @@ def test_python_m_serves_and_stops_on_sigint():
         status, out = get(base, "/api/steady", {"theta0": 0.5, "omega30": 1.5})
         assert status == 200 and out["exists"]
         proc.send_signal(signal.SIGINT)
-        _, err = proc.communicate(timeout=20)
+        _, err = proc.communicate(timeout=HANG)
     finally:
         if proc.poll() is None:
             proc.kill()

@@ -47,7 +47,7 @@ def page(chromium):
         srv.server_close()
 
 
-def wait_for(driver, script, timeout=20.0):
+def wait_for(driver, script, timeout=120.0):
     end = time.monotonic() + timeout
     while time.monotonic() < end:
         value = driver.execute_script(script)

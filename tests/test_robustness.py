@@ -315,7 +315,7 @@ def _interrupt(argv, tmp_path, sig, after: float, marker: str | None = None):
     time.sleep(after)
     proc.send_signal(sig)
     try:
-        proc.wait(timeout=60)
+        proc.wait(timeout=600)
     except subprocess.TimeoutExpired:
         proc.kill()
         raise

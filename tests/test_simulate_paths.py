@@ -117,7 +117,7 @@ def test_a_second_background_compiler_leaves_at_once(tmp_path):
     with open(tmp_path / "rollingdisk-jit.lock", "a") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)  # a compiler at work
         res = subprocess.run([sys.executable, "-m", "rollingdisk.engine.jit"], env=env,
-                             capture_output=True, text=True, timeout=60)
+                             capture_output=True, text=True, timeout=600)
     assert res.returncode == 0, res.stderr
     assert not any(p.name.endswith(".ready") for p in tmp_path.iterdir())
     assert not any(p.suffix == ".nbi" for p in tmp_path.rglob("*"))  # compiled nothing
