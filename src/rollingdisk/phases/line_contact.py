@@ -37,6 +37,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rollingdisk.model.geometry import inertia
+from rollingdisk.phases.line_kernel import kernels as _kernels
 
 __all__ = ["LINE_STATE", "SLIDE", "STICK_P", "STICK_M", "ROLL", "ROLL_STUCK", "MODE_NAMES",
            "line_params", "line_forces", "line_rhs", "line_energy", "line_from_free",
@@ -82,8 +83,24 @@ def _direction(u, seed, floor):
     return (u[0] / n, u[1] / n) if n > 0.0 else (0.0, 0.0)
 
 
+def _corner_directions(y, p):
+    """Unit slip directions ``(d_+x, d_+y, d_-x, d_-y)`` of the sliding corners of the
+    mode of ``p`` (0 for a sticking corner), as :func:`_direction` gives them."""
+    h = p[_H]
+    base = int(p[_MODE]) & 3
+    u_p, u_m = _slips(h, y)
+    d_p = d_m = (0.0, 0.0)
+    if base not in (ROLL, STICK_P):
+        d_p = _direction(u_p, (p[_DP], p[_DP + 1]), p[_FLOOR])
+    if base not in (ROLL, STICK_M):
+        d_m = _direction(u_m, (p[_DM], p[_DM + 1]), p[_FLOOR])
+    return d_p[0], d_p[1], d_m[0], d_m[1]
+
+
 def line_forces(y, p):
-    """Solve the mode's linear system at state ``y``.
+    """Solve the mode's linear system at state ``y``
+    (:func:`rollingdisk.phases.line_kernel.line_system`, compiled where the process runs
+    compiled code).
 
     Returns
     -------
@@ -92,73 +109,15 @@ def line_forces(y, p):
         ``(d v_x/dt, d v_y/dt, d omega2/dt, d omega3/dt)``, the normal forces, the corner
         friction forces (Cxyz) and the contact moment.
     """
-    h, k1, k2 = p[_H], p[_K1], p[_K2]
-    mode = int(p[_MODE])
-    base, stuck = mode & 3, bool(mode & ROLL_STUCK)
-    vx, vy, w2, w3 = y[4], y[5], y[6], y[7]
-    u_p, u_m = _slips(h, y)
-    # unknowns: 0 dvx, 1 dvy, 2 dw2, 3 dw3, 4 lam_p, 5 lam_m, 6 Fpx, 7 Fpy, 8 Fmx, 9 Fmy,
-    # 10 M_y (the holding moment while stuck)
-    A = np.zeros((11, 11))
-    b = np.zeros(11)
-    Mz = -p[_CP] * (1.0 if w3 > 0.0 else -1.0 if w3 < 0.0 else 0.0) - p[_CA] * w3
-    My = 0.0 if stuck else (-p[_CR] * (1.0 if w2 > 0.0 else -1.0 if w2 < 0.0 else p[_RS]))
-    # balances (symbolic.line_contact.newton_euler), M_x = 0 (omega_h = (0, omega2))
-    A[0, [0, 6, 8]] = 1.0, -1.0, -1.0
-    b[0] = w3 * vy
-    A[1, [1, 7, 9]] = 1.0, -1.0, -1.0
-    b[1] = -w3 * vx
-    A[2, [2, 6, 8]] = k2, 1.0, 1.0
-    b[2] = My
-    if stuck:
-        A[2, 10] = -1.0
-    A[3, [3, 6, 8]] = k1, -h, h
-    b[3] = Mz
-    A[4, [4, 7, 9]] = 2.0 * h, -1.0, -1.0
-    b[4] = h + k2 * w2 * w3
-    A[5, [4, 5]] = 1.0, 1.0
-    b[5] = 1.0
-    row = 6
-    seed_p = (p[_DP], p[_DP + 1])
-    seed_m = (p[_DM], p[_DM + 1])
-    for s, fx, lam, u, seed in ((1, 6, 4, u_p, seed_p), (-1, 8, 5, u_m, seed_m)):
-        sticks = base == ROLL or base == (STICK_P if s == 1 else STICK_M)
-        if sticks:  # d u_s/dt = 0: dvx - dw2 + s h dw3 = 0 (and dvy = 0, once)
-            A[row, [0, 2, 3]] = 1.0, -1.0, s * h
-            row += 1
-        else:  # F_s = -mu_k lam_s d_s
-            d = _direction(u, seed, p[_FLOOR])
-            A[row, [fx, lam]] = 1.0, p[_MUK] * d[0]
-            A[row + 1, [fx + 1, lam]] = 1.0, p[_MUK] * d[1]
-            row += 2
-    if base != SLIDE:
-        A[row, 1] = 1.0  # dvy = 0
-        row += 1
-    if base == ROLL:  # the sideways split is free; equal halves
-        A[row, [7, 9]] = 1.0, -1.0
-        row += 1
-    if stuck:
-        A[row, 2] = 1.0
-        row += 1
-    else:
-        A[row, 10] = 1.0
-        row += 1
-    x = np.linalg.solve(A, b)
-    M = np.array([0.0, x[10] if stuck else My, Mz])
-    return x[:4], x[4], x[5], x[6:8], x[8:10], M
+    f = _kernels()["line_system"](y, p, *_corner_directions(y, p))
+    return f[:4], f[4], f[5], f[6:8], f[8:10], np.array([0.0, f[10], f[11]])
 
 
 def line_rhs(t, y, p):
     """``dy/dt`` of :data:`LINE_STATE` in the mode of ``p`` (plain function of ``(t, y,
-    params)``); the last component is the dissipated power ``-(sum F_s . u_s + omega . M)``."""
-    acc, _, _, Fp, Fm, M = line_forces(y, p)
-    h = p[_H]
-    c, s = math.cos(y[2]), math.sin(y[2])
-    u_p, u_m = _slips(h, y)
-    power = (Fp[0] * u_p[0] + Fp[1] * u_p[1] + Fm[0] * u_m[0] + Fm[1] * u_m[1]
-             + y[6] * M[1] + y[7] * M[2])
-    return np.array([y[4] * c - y[5] * s, y[4] * s + y[5] * c, y[7], y[6],
-                     acc[0], acc[1], acc[2], acc[3], -power])
+    params)``); the last component is the dissipated power ``-(sum F_s . u_s + omega . M)``
+    (:func:`rollingdisk.phases.line_kernel.line_rhs_kernel`)."""
+    return _kernels()["line_rhs_kernel"](y, p, *_corner_directions(y, p))
 
 
 def line_energy(h, y):
@@ -451,6 +410,11 @@ def run_line_contact(h, ground, t0, t1, s, *, rtol=1e-10, atol=1e-12, slip_tol=1
     """
     from scipy.integrate import solve_ivp
 
+    from rollingdisk.ivp import fastsegment
+    from rollingdisk.phases import line_kernel
+
+    if fastsegment.loaded() and not line_kernel.loaded():
+        line_kernel.load_compiled()  # the process runs compiled code: this phase too
     y = line_from_free(s)
     t = t0
     segs = []

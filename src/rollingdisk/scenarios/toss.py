@@ -295,16 +295,19 @@ class EnsembleResult:
 
 def _load_compiled():
     """An ensemble is a long job: load the compiled contact phase
-    (:mod:`rollingdisk.ivp.fastsegment`) at once instead of after the process's
+    (:mod:`rollingdisk.ivp.fastsegment`) and line contact's kernels
+    (:mod:`rollingdisk.phases.line_kernel`) at once instead of after the process's
     uncompiled budget (compiling it if numba's cache is cold, once per machine); without
     numba the tosses run on the scipy path."""
     from rollingdisk.ivp import fastsegment as _fs
+    from rollingdisk.phases import line_kernel
 
     if _fs.available():
         try:
             _fs.compiled()
         except Exception:  # noqa: BLE001 - numba broken: the scipy path still works
             pass
+        line_kernel.load_compiled()
 
 
 def _one(args):
