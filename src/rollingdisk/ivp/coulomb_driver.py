@@ -100,6 +100,20 @@ class _Points:
         if len(self.t) > self.max_points:
             self._thin()
 
+    def add_block(self, ts, zs, m, mode):
+        """:meth:`add` of the regular steps ``ts[:m], zs[:m]`` (copied), at once where no
+        step would be skipped or thinned."""
+        if self.stride == 1 and len(self.t) + m <= self.max_points:
+            self._since = 0
+            self._pending = None
+            self.t.extend(ts[:m].tolist())
+            self.z.extend(zs[:m].copy())
+            self.mode.extend([mode] * m)
+            self.pinned.extend([False] * m)
+            return
+        for i in range(m):
+            self.add(float(ts[i]), zs[i], mode)
+
     def _thin(self):
         n = len(self.t)
         keep = [i for i in range(n) if self.pinned[i] or i % 2 == 0 or i == n - 1]
@@ -322,7 +336,8 @@ class _Hybrid:
         c_roll, c_pivot, c_air = run.coeffs
         p = np.array([mode, g.mu_k, g.mu_s, c_roll, c_pivot, c_air, run.ref[0], run.ref[1],
                       run.u_eps, run.sz, run.side, run.alpha_min, run.rref[0], run.rref[1],
-                      W_EPS, o.get("quasi_static_slip", 0.0)], dtype=float)
+                      W_EPS, o.get("quasi_static_slip", 0.0),
+                      0.0 if run.armed else run.floor, U_EPS], dtype=float)
         atolv = np.full(self.z.shape[0], float(o["atol"]))
         edge = self.h > 0 and self.guards
         active = np.array(_active(run, mode, edge, self.guards), dtype=np.bool_)
@@ -336,20 +351,15 @@ class _Hybrid:
                 (status, m, n, n_rhs, t, y, dt_next, t_new, dt, y_new, F) = advance(
                     p, self.h, self.t, self.z, self.t1, dt_try, o["rtol"], atolv,
                     float(o["max_step"]),
-                    min(o["max_steps"] - self.n_steps, CHUNK if active[0] else 1), active, ts,
-                    zs)
+                    min(o["max_steps"] - self.n_steps, CHUNK), active, ts, zs)
             self.n_steps += n
             run.n_rhs += n_rhs
-            add = self.points.add
-            for i in range(m):
-                add(float(ts[i]), zs[i], mode)
+            self.points.add_block(ts, zs, m, mode)
             run.ref = (float(p[6]), float(p[7]))
             run.rref = (float(p[12]), float(p[13]))
             self.t, self.z = float(t), y.copy()
-            if not active[0] and m and self._arms(self.z):  # one step a call while not armed
-                active[0] = True
-                p[8] = run.u_eps
-                p[6], p[7] = run.ref
+            if active[0] and not run.armed and mode & 1 == SLIDING:
+                run.armed, run.u_eps = True, U_EPS  # armed in the loop (as _arms does)
             self._report()
             if status == _fs.COMPLETED:
                 return False

@@ -53,8 +53,10 @@ from rollingdisk.model import coulomb as _cl
 
 #: Fields of the parameter array ``p`` of :func:`_rhs` and :func:`advance`, in order.
 P_FIELDS = ("mode", "mu_k", "mu_s", "c_roll", "c_pivot", "c_air", "ref_X", "ref_Y", "u_eps",
-            "sz", "side", "alpha_min", "rref_X", "rref_Y", "w_eps", "u_qs")
+            "sz", "side", "alpha_min", "rref_X", "rref_Y", "w_eps", "u_qs", "arm_floor",
+            "arm_u_eps")
 _NP = len(P_FIELDS)
+_NP_BASE = 16  # a shorter p (the first 16 fields) never arms: see advance
 N_STATE = 14
 N_EVENTS = 6
 _N_SUB = 8  # the dense output sampled at j/8 of a step, j = 1..8 (9 points with the start)
@@ -196,11 +198,15 @@ def advance(p, h, t, y0, t_end, dt_try, rtol, atolv, max_step, max_steps, active
 
     Parameters
     ----------
-    p : ndarray, shape (16,)
+    p : ndarray, shape (18,) or (16,)
         Parameters (:data:`P_FIELDS`); in sliding ``ref`` (``p[6:8]``) is set to ``U/|U|``
         after every stored step where ``|U| > u_eps``, with rolling resistance on and free
         ``rref`` (``p[12:14]``) to ``omega_h/|omega_h|`` where ``|omega_h| > w_eps`` (as the
-        Python driver does).
+        Python driver does).  While event 0 is inactive and ``arm_floor`` (``p[16]``) is
+        ``> 0`` (a slip started from rest, not yet armed), a stored step with ``|U| >
+        arm_floor`` arms it: ``active[0]`` becomes True, ``u_eps`` becomes ``arm_u_eps``
+        and ``arm_floor`` 0, and the loop goes on as a new call from that step would
+        (the Python driver once took one step a call to make that check).
     h : float
         Half-thickness of the disk (units of the radius ``a``).
     t, y0 : float, ndarray (14,)
@@ -347,6 +353,18 @@ def advance(p, h, t, y0, t_end, dt_try, rtol, atolv, max_step, max_steps, active
             if nw > p[14]:
                 p[12] = W_X / nw
                 p[13] = W_Y / nw
+        if not active[0] and p.shape[0] > _NP_BASE and p[16] > 0.0:
+            # a slip started from u = 0 passes its floor (coulomb_driver._Hybrid._arms):
+            # its end counts from here on, the friction follows u/|u| above arm_u_eps;
+            # the step goes on as a new call would, from f and events at the new p
+            u_x, u_y = _slip_velocity(h, y)  # noqa: F821
+            U_X, U_Y = _to_inertial(y[4], u_x, u_y)  # noqa: F821
+            if math.hypot(U_X, U_Y) > p[16]:
+                active[0] = True
+                p[16] = 0.0
+                p[8] = p[17]
+                _rhs(p, h, y, f)
+                n_rhs += 1
         _cc_events(p, h, y, g_old)
         dt_abs = h_next
     return status, m, n_steps, n_rhs, t, y, dt_abs, t_new, dt, y_new, F
@@ -545,7 +563,7 @@ def _probe_states():
         y[5] = 0.4 + 0.2 * rng.uniform()
         y[7:10] = rng.uniform(-1.0, 1.0, 3)
         p = np.array([float(mode), 0.4, 0.5, 0.01, 0.02, 0.003, 0.6, 0.8, 1e-8, -1.0, 1.0,
-                      1e-8, -0.8, 0.6, 1e-8, 0.0])
+                      1e-8, -0.8, 0.6, 1e-8, 0.0, 1e-6, 1e-8])  # sliding modes arm
         out.append((p, h, y))
     return out
 
@@ -564,8 +582,8 @@ def matches_python(ns) -> bool:
         for space in (ns, py):
             ts = np.empty(3)
             zs = np.empty((3, N_STATE))
-            r = space["advance"](p.copy(), h, 0.0, y, 1.0, 0.0, 1e-9, atolv, np.inf, 3, active,
-                                 ts, zs)
+            r = space["advance"](p.copy(), h, 0.0, y, 1.0, 0.0, 1e-9, atolv, np.inf, 3,
+                                 active.copy(), ts, zs)
             res.append((r[2], ts.copy(), zs.copy()))
         (n1, t1, z1), (n2, t2, z2) = res
         if n1 != n2 or not np.allclose(t1, t2, rtol=1e-10, atol=1e-14) or not np.allclose(
