@@ -1,8 +1,9 @@
 """Write the measured start-up figures into the README and docs/performance.md.
 
 One source: the JSON that ``benchmarks/startup.py`` writes (default
-``benchmarks/results/startup.json``) and, where present, ``benchmarks/sweep.py``'s and
-``benchmarks/atlas.py``'s (``benchmarks/results/sweep.json``, ``atlas.json``).  This
+``benchmarks/results/startup.json``) and, where present, ``benchmarks/sweep.py``'s,
+``benchmarks/atlas.py``'s and ``benchmarks/toss.py``'s (``benchmarks/results/sweep.json``,
+``atlas.json``, ``toss.json``).  This
 script renders it into
 
 * the README's block between the markers ``<!-- performance:begin ... -->`` and
@@ -11,7 +12,8 @@ script renders it into
   that ``tests/test_startup_report.py`` can check that both texts are what this script
   makes of that data: no figure is copied by hand.
 
-Run:  python benchmarks/report.py [--startup PATH] [--sweep PATH] [--atlas PATH] [--check]
+Run:  python benchmarks/report.py [--startup PATH] [--sweep PATH] [--atlas PATH]
+      [--toss PATH] [--check]
 """
 
 from __future__ import annotations
@@ -132,6 +134,22 @@ def _sweep_table(w: dict | None) -> str:
 """
 
 
+def _toss_table(c: dict | None) -> str:
+    """docs/performance.md's section on coin tosses (``benchmarks/toss.py``'s JSON), or ''."""
+    if not c:
+        return ""
+    counts = ", ".join(f"{k} {v}" for k, v in c["counts"].items())
+    return f"""
+## Coin tosses
+
+`benchmarks/toss.py`: `{c['job']}` in one process, warm, {c['cpus']} CPUs (load average
+{c['load_average'][0]:g}): **{c['cpu_ms_per_toss']:.1f} ms of CPU a toss**
+({c['wall_ms_per_toss']:.1f} ms wall), {c['core_hours_per_million']:g} core-hours per million
+tosses; the target of issue 31 (10^6 tosses in 1 h on 2 cores) is
+{c['target_cpu_ms_per_toss']:g} ms.  Outcomes: {counts}.
+"""
+
+
 def _wrap(text: str, width: int = 99) -> str:
     """Greedy line wrap (the README's style), never breaking inside a code span."""
     words, lines, line = re.findall(r"`[^`]*`\S*|\S+", text), [], ""
@@ -188,7 +206,7 @@ Heavy packages each command imports (`python -X importtime`, cumulative seconds)
 | command | packages |
 |---|---|
 {imports}
-{_atlas_table(d.get("atlas"))}{_sweep_table(d.get("sweep"))}
+{_atlas_table(d.get("atlas"))}{_sweep_table(d.get("sweep"))}{_toss_table(d.get("toss"))}
 {DATA_BEGIN}
 {json.dumps(d, indent=1)}
 {DATA_END}
@@ -215,6 +233,8 @@ def main(argv=None) -> int:
                     "sweep.json", help="benchmarks/sweep.py's JSON (left out if absent)")
     ap.add_argument("--atlas", type=Path, default=ROOT / "benchmarks" / "results" /
                     "atlas.json", help="benchmarks/atlas.py's JSON (left out if absent)")
+    ap.add_argument("--toss", type=Path, default=ROOT / "benchmarks" / "results" /
+                    "toss.json", help="benchmarks/toss.py's JSON (left out if absent)")
     ap.add_argument("--check", action="store_true",
                     help="exit 1 if the README or docs/performance.md differ from what the "
                     "data in docs/performance.md gives (writes nothing)")
@@ -226,7 +246,7 @@ def main(argv=None) -> int:
         print("up to date" if ok else "out of date: run python benchmarks/report.py")
         return 0 if ok else 1
     d = json.loads(args.startup.read_text())
-    for key, path in (("sweep", args.sweep), ("atlas", args.atlas)):
+    for key, path in (("sweep", args.sweep), ("atlas", args.atlas), ("toss", args.toss)):
         if path.exists():
             d[key] = json.loads(path.read_text())
     DOCS.write_text(render_docs(d))
