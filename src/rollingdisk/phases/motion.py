@@ -38,15 +38,15 @@ from rollingdisk.model.outcomes import outcome
 from rollingdisk.phases.flat import flat_friction, flat_run
 from rollingdisk.phases.flight import (
     _cross,
+    _flight_one,
     _lowest_height,
     _r_xyz,
     _rot_x,
     _rot_z,
     _state_energy,
-    free_flight,
     lowest_point,
 )
-from rollingdisk.phases.impact import impact
+from rollingdisk.phases.impact import _impact
 from rollingdisk.phases.line_contact import (
     capture_slips,
     free_from_line,
@@ -118,6 +118,13 @@ def _normalise_launch(s):
         s[5] += math.pi
         s[9], s[11] = -s[9], -s[11]
     return s
+
+
+def _rim_impact(h, s, side, e, mu):
+    """:func:`~rollingdisk.phases.impact.impact` at rim edge ``side`` of the checked free
+    state ``s`` (the run's own: the public function's checks of its arguments skipped)."""
+    r = _r_xyz(h, s[4], side, 1.0 if math.cos(s[4]) >= 0.0 else -1.0)
+    return _impact(h, s, r, e, e, mu, 1e-9)
 
 
 def _face_impact(h, s):
@@ -399,10 +406,10 @@ class _Motion:
         h = self.h
         for _ in range(50):
             e = 0.0 if self._zeno(t) else self.e
-            res = impact(self.disk, s, side, e, self.mu)
+            res = _rim_impact(h, s, side, e, self.mu)
             if e > 0.0 and 0.0 < res.contact_velocity_post[2] < self.v_capture:
                 e = 0.0
-                res = impact(self.disk, s, side, 0.0, self.mu)
+                res = _rim_impact(h, s, side, 0.0, self.mu)
             self._impact_record(t, kind, [*res.impulse_tangential, res.impulse_normal],
                                 res.energy_lost, e)
             s = res.post_state
@@ -420,7 +427,7 @@ class _Motion:
         s_start, t_skip = s, 0.0
         if _lowest_height(h, s[2], s[4]) <= 1e-9:  # leaving the plane: step clear of it
             for d in 10.0 ** np.arange(-7.0, -1.5, 0.5):
-                sd = free_flight(self.disk, s, d)
+                sd = _flight_one(self.h, s, float(d))
                 if _lowest_height(h, sd[2], sd[4]) > 1e-12:
                     s_start, t_skip = sd, float(d)
                     break
@@ -436,11 +443,11 @@ class _Motion:
                     f"by t = {t:.12g} (finding a flight's touchdown, at t + {spent})", t, s)
         t_hit = t + tau
         if t_hit >= self.t1:
-            s1 = free_flight(self.disk, s, self.t1 - t)
+            s1 = _flight_one(self.h, s, self.t1 - t)
             self.segments.append(FlightSegment(self.disk, t, self.t1, s, s1))
             self._check([_state_energy(h, s), _state_energy(h, s1)])
             return ("end", "completed", f"reached t = {self.t1:.12g} in flight", self.t1, s1)
-        s1 = free_flight(self.disk, s_start, tau - t_skip)
+        s1 = _flight_one(self.h, s_start, tau - t_skip)
         self.segments.append(FlightSegment(self.disk, t, t_hit, s, s1))
         self._check([_state_energy(h, s), _state_energy(h, s1)])
         lp = lowest_point(self.disk, s1, tol=1e-9)
@@ -532,7 +539,7 @@ class _Motion:
         """Whether the free disk leaves the plane within 1e-2 (its lowest point rises)."""
         h = self.h
         for d in (1e-4, 1e-3, 1e-2):
-            sd = free_flight(self.disk, s, d)
+            sd = _flight_one(self.h, s, float(d))
             if _lowest_height(h, sd[2], sd[4]) > 1e-12:
                 return True
         return False
