@@ -83,20 +83,6 @@ def _direction(u, seed, floor):
     return (u[0] / n, u[1] / n) if n > 0.0 else (0.0, 0.0)
 
 
-def _corner_directions(y, p):
-    """Unit slip directions ``(d_+x, d_+y, d_-x, d_-y)`` of the sliding corners of the
-    mode of ``p`` (0 for a sticking corner), as :func:`_direction` gives them."""
-    h = p[_H]
-    base = int(p[_MODE]) & 3
-    u_p, u_m = _slips(h, y)
-    d_p = d_m = (0.0, 0.0)
-    if base not in (ROLL, STICK_P):
-        d_p = _direction(u_p, (p[_DP], p[_DP + 1]), p[_FLOOR])
-    if base not in (ROLL, STICK_M):
-        d_m = _direction(u_m, (p[_DM], p[_DM + 1]), p[_FLOOR])
-    return d_p[0], d_p[1], d_m[0], d_m[1]
-
-
 def line_forces(y, p):
     """Solve the mode's linear system at state ``y``
     (:func:`rollingdisk.phases.line_kernel.line_system`, compiled where the process runs
@@ -109,7 +95,7 @@ def line_forces(y, p):
         ``(d v_x/dt, d v_y/dt, d omega2/dt, d omega3/dt)``, the normal forces, the corner
         friction forces (Cxyz) and the contact moment.
     """
-    f = _kernels()["line_system"](y, p, *_corner_directions(y, p))
+    f = _kernels()["line_system"](y, p)
     return f[:4], f[4], f[5], f[6:8], f[8:10], np.array([0.0, f[10], f[11]])
 
 
@@ -117,7 +103,7 @@ def line_rhs(t, y, p):
     """``dy/dt`` of :data:`LINE_STATE` in the mode of ``p`` (plain function of ``(t, y,
     params)``); the last component is the dissipated power ``-(sum F_s . u_s + omega . M)``
     (:func:`rollingdisk.phases.line_kernel.line_rhs_kernel`)."""
-    return _kernels()["line_rhs_kernel"](y, p, *_corner_directions(y, p))
+    return _kernels()["line_rhs_kernel"](y, p)
 
 
 def line_energy(h, y):

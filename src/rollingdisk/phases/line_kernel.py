@@ -5,13 +5,14 @@ compiled with numba where the process runs compiled code.
 :func:`rollingdisk.phases.line_contact.line_forces` (the balances of
 :func:`rollingdisk.symbolic.line_contact.newton_euler` with the corner laws of the mode);
 :func:`line_rhs_kernel` adds the kinematics and the dissipated power of
-:func:`~rollingdisk.phases.line_contact.line_rhs`.  The unit slip directions of the sliding
-corners are arguments: they are computed by the caller with Python's ``math.hypot``
-(whose rounding numba's libm ``hypot`` need not share), so the compiled and the
-uncompiled functions give the same numbers bit for bit (the same operations in the same
-order; numba's ``np.linalg.solve`` is LAPACK's ``gesv`` as numpy's is).  The line phase
-was 60-80 % of the CPU time of a toss that ends on its edge: about 10,000 right-hand
-sides a toss, 75 microseconds each uncompiled.
+:func:`~rollingdisk.phases.line_contact.line_rhs`.  The compiled functions give the plain
+ones' numbers bit for bit: the same operations in the same order (numba's
+``np.linalg.solve`` is LAPACK's ``gesv``, as numpy's is), and the length of a slip,
+``math.hypot`` in the plain functions, is :func:`python_hypot` in the compiled ones:
+CPython's own algorithm, which libm's ``hypot`` (numba's ``math.hypot``) does not share
+to the last bit.  :func:`load_compiled` checks both before it hands the compiled ones
+out.  The line phase was 60-80 % of the CPU time of a toss that ends on its edge: about
+10,000 right-hand sides a toss, 75 microseconds each uncompiled.
 
 Parameters ``p``: the float array of :func:`~rollingdisk.phases.line_contact.line_params`.
 Units m = a = g = 1.
@@ -24,13 +25,111 @@ import types
 
 import numpy as np
 
-__all__ = ["line_system", "line_rhs_kernel", "kernels", "load_compiled", "loaded", "NAMES"]
+__all__ = ["line_system", "line_rhs_kernel", "corner_directions", "python_hypot", "kernels",
+           "load_compiled", "loaded", "NAMES"]
 
 #: The functions of the namespace, callees first.
-NAMES = ("line_system", "line_rhs_kernel")
+NAMES = ("_hypot", "_direction", "corner_directions", "line_system", "line_rhs_kernel")
+
+_SPLIT = 134217729.0  # 2**27 + 1: Veltkamp's split of a double into two 26-bit halves
+_START = 2.0  # line_contact._START: a seeded slip keeps its seed up to _START * floor
+_hypot = math.hypot  # the plain functions' slip length; python_hypot where compiled
 
 
-def line_system(y, p, dpx, dpy, dmx, dmy):
+def python_hypot(x, y):
+    """``math.hypot(x, y)`` as CPython 3.11 computes it (``vector_norm`` of
+    ``Modules/mathmodule.c``): the squares summed exactly in double-double arithmetic
+    (Veltkamp splitting, compensated sums), one square root, one Newton correction.
+    numba-compilable; :func:`load_compiled` checks it against ``math.hypot`` of the
+    running Python and uses it only where they agree."""
+    ax = abs(x)
+    ay = abs(y)
+    mx = 0.0
+    if ax > mx:
+        mx = ax
+    if ay > mx:
+        mx = ay
+    if math.isinf(mx):
+        return mx
+    if math.isnan(ax) or math.isnan(ay):
+        return math.nan
+    if mx == 0.0:
+        return mx
+    max_e = math.frexp(mx)[1]
+    csum = 1.0
+    frac1 = 0.0
+    frac2 = 0.0
+    frac3 = 0.0
+    if max_e < -1023:  # subnormal: divide by the largest instead of scaling
+        for v in (ax, ay):
+            q = v / mx
+            q = q * q
+            old = csum
+            csum += q
+            frac1 += (old - csum) + q
+        return mx * math.sqrt(csum - 1.0 + frac1)
+    scale = math.ldexp(1.0, -max_e)
+    for v in (ax, ay):
+        q = v * scale
+        t = q * _SPLIT
+        hi = t - (t - q)
+        lo = q - hi
+        q = hi * hi
+        old = csum
+        csum += q
+        frac1 += (old - csum) + q
+        q = 2.0 * hi * lo
+        old = csum
+        csum += q
+        frac2 += (old - csum) + q
+        frac3 += lo * lo
+    hh = math.sqrt(csum - 1.0 + (frac1 + frac2 + frac3))
+    t = hh * _SPLIT
+    hi = t - (t - hh)
+    lo = hh - hi
+    q = -hi * hi
+    old = csum
+    csum += q
+    frac1 += (old - csum) + q
+    q = -2.0 * hi * lo
+    old = csum
+    csum += q
+    frac2 += (old - csum) + q
+    q = -lo * lo
+    old = csum
+    csum += q
+    frac3 += (old - csum) + q
+    q = csum - 1.0 + (frac1 + frac2 + frac3)
+    return (hh + q / (2.0 * hh)) / scale
+
+
+def _direction(ux, uy, sx, sy, floor):
+    """Unit slip direction of a sliding corner (:func:`rollingdisk.phases.line_contact
+    ._direction`): a seeded corner (``(sx, sy) != 0``: it has just started to slip from
+    rest) keeps its seed until its slip passes ``_START * floor``."""
+    n = _hypot(ux, uy)
+    if (sx != 0.0 or sy != 0.0) and n <= _START * floor:
+        return sx, sy
+    if n > 0.0:
+        return ux / n, uy / n
+    return 0.0, 0.0
+
+
+def corner_directions(y, p):
+    """Unit slip directions ``(d_+x, d_+y, d_-x, d_-y)`` of the sliding corners of the mode
+    of ``p`` at ``y`` (0 for a sticking corner); slips ``u_s = (v_x - omega2 + s h omega3,
+    v_y)``."""
+    h = p[0]
+    base = int(p[8]) & 3
+    dpx = dpy = dmx = dmy = 0.0
+    if base != 3 and base != 1:
+        dpx, dpy = _direction(y[4] - y[6] + h * y[7], y[5], p[9], p[10], p[14])
+    if base != 3 and base != 2:
+        dmx, dmy = _direction(y[4] - y[6] - h * y[7], y[5], p[11], p[12], p[14])
+    return dpx, dpy, dmx, dmy
+
+
+def line_system(y, p):
     """Solve the mode ``p[8]``'s linear system at the line state ``y``.
 
     Parameters
@@ -39,8 +138,6 @@ def line_system(y, p, dpx, dpy, dmx, dmy):
         Line state (:data:`~rollingdisk.phases.line_contact.LINE_STATE`).
     p : ndarray
         :func:`~rollingdisk.phases.line_contact.line_params`.
-    dpx, dpy, dmx, dmy : float
-        Unit slip directions of corners + and - (used where the corner slides).
 
     Returns
     -------
@@ -60,6 +157,7 @@ def line_system(y, p, dpx, dpy, dmx, dmy):
     vy = y[5]
     w2 = y[6]
     w3 = y[7]
+    dpx, dpy, dmx, dmy = corner_directions(y, p)
     # unknowns: 0 dvx, 1 dvy, 2 dw2, 3 dw3, 4 lam_p, 5 lam_m, 6 Fpx, 7 Fpy, 8 Fmx, 9 Fmy,
     # 10 M_y (the holding moment while stuck)
     A = np.zeros((11, 11))
@@ -139,12 +237,12 @@ def line_system(y, p, dpx, dpy, dmx, dmy):
     return out
 
 
-def line_rhs_kernel(y, p, dpx, dpy, dmx, dmy):
+def line_rhs_kernel(y, p):
     """``dy/dt`` of the line state ``y`` (:func:`~rollingdisk.phases.line_contact.line_rhs`):
     the centre's velocity in OXYZ, ``dpsi/dt = omega3``, ``dphi/dt = omega2``, the
     accelerations of :func:`line_system` and the dissipated power ``-(sum F_s . u_s +
     omega . M)``."""
-    f = line_system(y, p, dpx, dpy, dmx, dmy)
+    f = line_system(y, p)
     h = p[0]
     c = math.cos(y[2])
     s = math.sin(y[2])
@@ -194,6 +292,7 @@ def load_compiled() -> bool:
         import sys
 
         ns = dict(globals())
+        ns["_hypot"] = python_hypot
         for name in NAMES:
             f = ns[name]
             ns[name] = types.FunctionType(f.__code__, ns, f.__name__, f.__defaults__,
@@ -210,17 +309,30 @@ def load_compiled() -> bool:
 
 
 def _same_numbers(ns) -> bool:
-    """Whether the functions of ``ns`` give the plain functions' numbers bit for bit on
-    states of every mode (this also compiles them, or loads them from the cache)."""
+    """Whether the functions of ``ns`` give the plain functions' numbers bit for bit: the
+    slip length on pairs over 600 binades (and zeros, subnormals, infinities), the kernels
+    on states of every mode, seeded or not (this also compiles them, or loads them from
+    numba's cache)."""
     rng = np.random.default_rng(7)
+    xs = rng.standard_normal((20000, 2)) * 10.0 ** rng.uniform(-300.0, 300.0, (20000, 1))
+    xs[:, 1] *= 10.0 ** rng.uniform(-20.0, 0.0, 20000)
+    xs = np.concatenate([xs, [[0.0, 0.0], [5e-324, 0.0], [3e-310, -4e-310], [np.inf, 1.0],
+                              [1e308, 1e308], [-0.0, 2.0]]])
+    hyp = ns["_hypot"]
+    if any(hyp(a, b) != math.hypot(a, b) for a, b in xs):
+        return False
     for mode in range(8):
-        y = rng.uniform(-1.0, 1.0, 9)
-        p = np.array([0.1, 0.25 + 0.01 / 3.0, 0.5, 0.6, 0.5, 0.01, 0.002, 0.001,
-                      float(mode), 0.0, 0.0, 0.0, 0.0, 1.0, 1e-9])
-        d = rng.uniform(-1.0, 1.0, 4)
-        for name in NAMES:
-            a = ns[name](y, p, d[0], d[1], d[2], d[3])
-            b = _PYTHON[name](y, p, d[0], d[1], d[2], d[3])
-            if not np.array_equal(a, b):
-                return False
+        for seeded in (False, True):
+            y = rng.uniform(-1.0, 1.0, 9)
+            if seeded:  # slips at the floor, where the seed decides
+                y[4] = y[6] - 0.1 * y[7] + 1e-9
+                y[5] = 1e-9
+            d = rng.uniform(-1.0, 1.0, 4) if seeded else np.zeros(4)
+            p = np.array([0.1, 0.25 + 0.01 / 3.0, 0.5, 0.6, 0.5, 0.01, 0.002, 0.001,
+                          float(mode), d[0], d[1], d[2], d[3], 1.0, 1e-9])
+            for name in ("corner_directions", "line_system", "line_rhs_kernel"):
+                a = np.array(ns[name](y, p))
+                b = np.array(_PYTHON[name](y, p))
+                if not np.array_equal(a, b):
+                    return False
     return True
