@@ -47,7 +47,13 @@ from pathlib import Path
 
 from rollingdisk.atlas.children import _euler_disk_in_child, _start_child, _start_to_rest
 from rollingdisk.atlas.page import _index_html
-from rollingdisk.atlas.steps import _map_steps, _motion_steps, _thresholds_step, steady_trajectory
+from rollingdisk.atlas.steps import (
+    _map_steps,
+    _motion_steps,
+    _thresholds_step,
+    _to_rest_section,
+    steady_trajectory,
+)
 from rollingdisk.model.disk import DEFAULT_H, Disk, check_h
 from rollingdisk.util.files import atomic_dir, check_replaceable
 
@@ -207,7 +213,8 @@ def _write_atlas(disk, out: Path, chosen, *, quick: bool, pr: _Progress) -> tupl
     euler = _start_child(_euler_disk_in_child, (out, quick, dpi, disk))
     helpers = [euler]
     try:
-        rest = _start_to_rest(out, quick, disk) if (os.cpu_count() or 1) > 1 else None
+        rest = (_start_to_rest(_to_rest_section, out, quick, disk)
+                if (os.cpu_count() or 1) > 1 else None)
         if rest is not None:
             helpers.append(rest[0])
         return _write_atlas_steps(disk, out, chosen, quick=quick, pr=pr, files=files, dpi=dpi,

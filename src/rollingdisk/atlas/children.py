@@ -23,24 +23,23 @@ def _start_animation(traj, path, kw):
     return _start_child(_animate_in_child, (traj, path, kw))
 
 
-def _start_to_rest(out: Path, quick: bool, disk: Disk):
-    """Start :func:`rollingdisk.atlas.steps._to_rest_section` in a child process (its GIF
-    written into ``out``); returns ``(process, connection)``: the record arrives on the
-    connection (``EOFError`` there if the child died first)."""
+def _start_to_rest(section, out: Path, quick: bool, disk: Disk):
+    """Start ``section(out, quick, [], disk)`` (the atlas's run to rest,
+    :func:`rollingdisk.atlas.steps._to_rest_section`, its GIF written into ``out``) in a
+    child process; returns ``(process, connection)``: the record arrives on the connection
+    (``EOFError`` there if the child died first)."""
     import multiprocessing
 
     receive, send = multiprocessing.Pipe(duplex=False)
-    proc = _start_child(_to_rest_in_child, (out, quick, disk, send))
+    proc = _start_child(_to_rest_in_child, (section, out, quick, disk, send))
     send.close()  # the child holds the only sending end: its death ends recv()
     return proc, receive
 
 
-def _to_rest_in_child(out: Path, quick: bool, disk: Disk, conn):
-    """The run-to-rest helper's body: its record sent on ``conn``."""
-    from rollingdisk.atlas.steps import _to_rest_section
-
+def _to_rest_in_child(section, out: Path, quick: bool, disk: Disk, conn):
+    """The run-to-rest helper's body: the record of ``section`` sent on ``conn``."""
     _quiet_signals()
-    conn.send(_to_rest_section(out, quick, [], disk))
+    conn.send(section(out, quick, [], disk))
     conn.close()
 
 
