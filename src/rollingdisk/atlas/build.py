@@ -19,7 +19,8 @@
   creep friction and rolling resistance, with the fitted and the predicted exponents
   (run in a second process alongside the other steps),
 * a disk let go to rest past the guards (bounces, rocking, falling flat): this disk when it
-  has a size, else a generic thick disk (``h = 0.3``, :data:`.steps.TO_REST`),
+  has a size, else a generic thick disk (``h = 0.3``, :data:`.steps.TO_REST`) (run in a
+  third process alongside the other steps when the machine has more than one core),
 * ``index.html`` showing it all, with relative image paths and no external resources: for
   a disk with a size, the object named (``"the 1-euro coin"``, from
   :data:`rollingdisk.model.units.DISKS`) in the title and heading, and its first screen
@@ -38,14 +39,21 @@ outside the numeric core (uses matplotlib through :mod:`rollingdisk.plotting.plo
 
 from __future__ import annotations
 
+import os
 import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from rollingdisk.atlas.children import _euler_disk_in_child, _start_child
+from rollingdisk.atlas.children import _euler_disk_in_child, _start_child, _start_to_rest
 from rollingdisk.atlas.page import _index_html
-from rollingdisk.atlas.steps import _map_steps, _motion_steps, _thresholds_step, steady_trajectory
+from rollingdisk.atlas.steps import (
+    _map_steps,
+    _motion_steps,
+    _thresholds_step,
+    _to_rest_section,
+    steady_trajectory,
+)
 from rollingdisk.model.disk import DEFAULT_H, Disk, check_h
 from rollingdisk.util.files import atomic_dir, check_replaceable
 
@@ -193,24 +201,38 @@ def _write_atlas(disk, out: Path, chosen, *, quick: bool, pr: _Progress) -> tupl
     files: list[Path] = []
     dpi = 60 if quick else 100
     n_map = (60, 50) if quick else (220, 180)
-    # Euler's disk runs for seconds on its own: started first, in a second process, and
-    # collected after the exact motion (step 8), so the atlas does not wait for it
+    # matplotlib and the plotting module, imported once here, are the helpers' too (forked)
+    import matplotlib.figure  # noqa: F401
+
+    import rollingdisk.plotting.plots  # noqa: F401
+
+    # Euler's disk and the disk let go to rest (with its animation) run for seconds each on
+    # their own: started first, each in a process of its own, and collected after the exact
+    # motion (steps 8, 9), so the atlas does not wait for them; with one core the run to
+    # rest stays in this process
     euler = _start_child(_euler_disk_in_child, (out, quick, dpi, disk))
+    helpers = [euler]
     try:
+        rest = (_start_to_rest(_to_rest_section, out, quick, disk)
+                if (os.cpu_count() or 1) > 1 else None)
+        if rest is not None:
+            helpers.append(rest[0])
         return _write_atlas_steps(disk, out, chosen, quick=quick, pr=pr, files=files, dpi=dpi,
-                                  n_map=n_map, euler=euler)
+                                  n_map=n_map, euler=euler, rest=rest)
     finally:
-        if euler.is_alive():  # interrupted or failed: stop the helper (the folder is dropped)
-            euler.terminate()
-            euler.join()
+        for proc in helpers:  # interrupted or failed: stop the helpers (the folder is dropped)
+            if proc.is_alive():
+                proc.terminate()
+                proc.join()
 
 
-def _write_atlas_steps(disk, out, chosen, *, quick, pr, files, dpi, n_map, euler):
-    """The steps of :func:`_write_atlas`, with the Euler's-disk helper process running."""
+def _write_atlas_steps(disk, out, chosen, *, quick, pr, files, dpi, n_map, euler, rest):
+    """The steps of :func:`_write_atlas`, with the helper processes running (Euler's disk;
+    ``rest``: the run to rest's process and connection, or None)."""
     thr = _thresholds_step(disk, out, pr, files)
     _map_steps(disk, out, quick=quick, pr=pr, files=files, dpi=dpi, n_map=n_map)
     motions = _motion_steps(disk, out, chosen, quick=quick, pr=pr, files=files, dpi=dpi,
-                            euler=euler)
+                            euler=euler, rest=rest)
     # 10. index page ------------------------------------------------------------------------
     pr.step("index.html")
     (out / "index.html").write_text(_index_html(disk, thr, motions,

@@ -1,5 +1,6 @@
-"""The atlas's helper processes: the first animation and Euler's disk, each drawn or run in
-a child process alongside the other steps (the two cores of a laptop), quiet on Ctrl-C.
+"""The atlas's helper processes: the first animation, the disk let go to rest and Euler's
+disk, each drawn or run in a child process alongside the other steps (the two cores of a
+laptop), quiet on Ctrl-C.
 """
 
 from __future__ import annotations
@@ -20,6 +21,26 @@ def _start_animation(traj, path, kw):
     """Start :func:`rollingdisk.plotting.animation.animate` in a child process (written atomically
     there); returns the process."""
     return _start_child(_animate_in_child, (traj, path, kw))
+
+
+def _start_to_rest(section, out: Path, quick: bool, disk: Disk):
+    """Start ``section(out, quick, [], disk)`` (the atlas's run to rest,
+    :func:`rollingdisk.atlas.steps._to_rest_section`, its GIF written into ``out``) in a
+    child process; returns ``(process, connection)``: the record arrives on the connection
+    (``EOFError`` there if the child died first)."""
+    import multiprocessing
+
+    receive, send = multiprocessing.Pipe(duplex=False)
+    proc = _start_child(_to_rest_in_child, (section, out, quick, disk, send))
+    send.close()  # the child holds the only sending end: its death ends recv()
+    return proc, receive
+
+
+def _to_rest_in_child(section, out: Path, quick: bool, disk: Disk, conn):
+    """The run-to-rest helper's body: the record of ``section`` sent on ``conn``."""
+    _quiet_signals()
+    conn.send(section(out, quick, [], disk))
+    conn.close()
 
 
 def _start_child(target, args):

@@ -116,11 +116,13 @@ def _map_steps(disk, out, *, quick, pr, files, dpi, n_map):
     pr.done()
 
 
-def _motion_steps(disk, out, chosen, *, quick, pr, files, dpi, euler) -> dict:
+def _motion_steps(disk, out, chosen, *, quick, pr, files, dpi, euler, rest=None) -> dict:
     """Steps 6-9: two steady circles simulated (the first animation drawn in a second
     process while this one goes on: the two cores of a laptop), the stable one's exact
-    motion, and Euler's disk (run alongside since the start).  No compile step: the two
-    short runs run the integrator uncompiled, so a cold atlas never waits for numba."""
+    motion, the disk let go to rest (``rest``: its process and connection, run alongside
+    since the start; None: run here) and Euler's disk (run alongside since the start).  No
+    compile step: the two short runs run the integrator uncompiled, so a cold atlas never
+    waits for numba."""
     motions = {}
     helpers = []
     try:
@@ -131,7 +133,8 @@ def _motion_steps(disk, out, chosen, *, quick, pr, files, dpi, euler) -> dict:
         motions["exact"] = _exact_section(chosen.stable, out, dpi, files)
         pr.done(f"period {motions['exact']['period']:.6g}")
         pr.step("a disk let go to rest: bounces, rocking")
-        motions["to_rest"] = _to_rest_section(out, quick, files, disk)
+        motions["to_rest"] = (_to_rest_section(out, quick, files, disk) if rest is None
+                              else _collect_to_rest(rest, out, quick, files))
         pr.done(f"{motions['to_rest']['n_impacts']} impacts, at rest at "
                 f"t = {motions['to_rest']['t_end']:.4g}")
         pr.step("Euler's disk (run alongside)")
@@ -186,6 +189,24 @@ def _one_motion(disk, out, chosen_motion, kind, *, quick, pr, files, dpi, helper
     files.append(gif)
     record = _motion_record(motion, stab, traj, kick)
     pr.done(f"status {record['status']}")
+    return record
+
+
+def _collect_to_rest(rest, out: Path, quick: bool, files: list) -> dict:
+    """The record of the run to rest from its helper process
+    (:func:`.children._start_to_rest`); its GIF joins ``files``."""
+    proc, conn = rest
+    try:
+        record = conn.recv()
+    except EOFError:
+        record = None
+    finally:
+        conn.close()
+    proc.join()
+    if record is None or proc.exitcode != 0:
+        raise RuntimeError(f"the run-to-rest process ended with exit code {proc.exitcode}")
+    if record["gif"]:
+        files.append(out / "to_rest.gif")
     return record
 
 
