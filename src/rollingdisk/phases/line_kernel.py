@@ -11,8 +11,8 @@ ones' numbers bit for bit: the same operations in the same order (numba's
 ``math.hypot`` in the plain functions, is :func:`python_hypot` in the compiled ones:
 CPython's own algorithm, which libm's ``hypot`` (numba's ``math.hypot``) does not share
 to the last bit.  :func:`load_compiled` checks both before it hands the compiled ones
-out.  The line phase was 60-80 % of the CPU time of a toss that ends on its edge: about
-10,000 right-hand sides a toss, 75 microseconds each uncompiled.
+out.  Compiled, because a toss that stands on its tread evaluates the line phase's
+right-hand side thousands of times, and uncompiled that was most of such a toss's time.
 
 Parameters ``p``: the float array of :func:`~rollingdisk.phases.line_contact.line_params`.
 Units m = a = g = 1.
