@@ -67,7 +67,10 @@ def main(argv=None) -> int:
                          else "rollingdisk: terminated\n")
         sys.stderr.flush()
         _REPORTED.append(True)
-        return 130 if interrupted else 143
+        code = 130 if interrupted else 143
+        if argv is None:
+            _exit_now(code)
+        return code
     if status in (130, 143):  # the command reported its interruption
         _REPORTED.append(True)
     return status
@@ -89,6 +92,22 @@ def _say_stopped(interrupted: bool) -> int:
     sys.stderr.flush()
     _REPORTED.append(True)
     return 130 if interrupted else 143
+
+
+def _exit_now(code: int) -> None:
+    """End this process with ``code`` after an interrupted command: the exit handlers run
+    (helper processes are joined, journals closed; outputs were already completed or
+    removed as the interruption unwound), then the process ends without the interpreter's
+    teardown.  The teardown finalises whatever the interruption left half built (a
+    compilation stopped midway), and under load that has ended the process with SIGSEGV
+    after its one line."""
+    import atexit
+
+    with contextlib.suppress(Exception):
+        sys.stdout.flush()
+    with contextlib.suppress(Exception):
+        atexit._run_exitfuncs()
+    os._exit(code)
 
 
 def _late(signum, frame):
