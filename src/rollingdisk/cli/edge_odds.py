@@ -130,11 +130,9 @@ def run(args) -> int:
         print(json.dumps(odds.as_dict(), allow_nan=False))
         return 0
     print(f"{'t/d':>8s} " + " ".join(f"{k:>22s}" for k in TOSS_OUTCOMES))
+    cols = {k: (odds.probability(k), *odds.interval(k)) for k in TOSS_OUTCOMES}
     for i, r in enumerate(odds.ratio):
-        cells = []
-        for k in TOSS_OUTCOMES:
-            lo, hi = (a[i] for a in odds.interval(k))
-            cells.append(f"{odds.probability(k)[i]:.4f} [{lo:.4f},{hi:.4f}]")
+        cells = [f"{p[i]:.4f} [{lo[i]:.4f},{hi[i]:.4f}]" for p, lo, hi in cols.values()]
         print(f"{r:8.4f} " + " ".join(f"{c:>22s}" for c in cells))
     print(f"model: {odds.model}")
     if not args.quiet:
